@@ -1,0 +1,123 @@
+//! Olano's Blum-Blum-Shub hash `x² mod M` (Olano 2005, "Modified Noise for Evaluation on Graphics
+//! Hardware", §3.3).
+//!
+//! A real BBS generator uses `M = p·q` for large primes; Olano keeps one squaring step with a small
+//! prime `M` so that every intermediate value is an exact small integer: with the paper's `M = 61`
+//! and arguments reduced mod `M` before squaring, no value exceeds `60² = 3600`, which fits an `i16`
+//! and is exact in `f32`. The largest prime whose square is exact in `f32` (below 2²⁴) is 4093.
+//!
+//! The same hash is computed two ways that agree for every input (tested exhaustively):
+//! the integer path [`Bbs::hash`] and the all-float path [`Bbs::hash_f32`], which reduces with
+//! Olano's five-instruction `i − floor(i/M)·M` as a GPU or SIMD unit would.
+
+/// The hash `x² mod M` for a prime modulus `M` (default 61, the paper's).
+///
+/// `M` must lie in `2..=4093` so that the square of a reduced argument is exact in `f32`; this is
+/// checked at compile time.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::hash::Bbs;
+///
+/// assert_eq!(Bbs::<61>::hash(10), 100 % 61);
+/// assert_eq!(Bbs::<61>::hash(-1), 1); // reduced first: -1 ≡ 60, 60² = 3600 ≡ 1
+/// assert_eq!(Bbs::<61>::hash3(1, 2, 3), Bbs::<61>::hash(1 + Bbs::<61>::hash(2 + Bbs::<61>::hash(3)) as i32));
+/// assert_eq!(Bbs::<4093>::hash_f32(-12345.0), Bbs::<4093>::hash(-12345) as f32);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Bbs<const M: u32 = 61>;
+
+impl<const M: u32> Bbs<M> {
+    const VALID: () = assert!(M >= 2 && M <= 4093, "Bbs modulus must be in 2..=4093");
+
+    /// The modulus, which is also the period of the hash.
+    pub const MODULUS: u32 = M;
+
+    /// `x mod M` in `0..M` for any `i32` (Euclidean remainder).
+    #[inline]
+    #[must_use]
+    pub const fn reduce(x: i32) -> u32 {
+        let () = Self::VALID;
+        x.rem_euclid(M as i32) as u32
+    }
+
+    /// One step of the hash for an argument already in `0..2M+1` or so: `(x mod M)² mod M`.
+    /// Kept separate so the noise kernels, whose arguments are small and non-negative, skip the
+    /// signed reduction.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn step(x: u32) -> u32 {
+        let () = Self::VALID;
+        let r = x % M;
+        (r * r) % M
+    }
+
+    /// `(x mod M)² mod M`, with `x` reduced into `0..M` before squaring so nothing overflows.
+    #[inline]
+    #[must_use]
+    pub const fn hash(x: i32) -> u32 {
+        let r = Self::reduce(x);
+        (r * r) % M
+    }
+
+    /// `hash(x + hash(y))`, the 2D chain (the innermost hash takes the last axis).
+    #[inline]
+    #[must_use]
+    pub const fn hash2(x: i32, y: i32) -> u32 {
+        Self::step(Self::reduce(x) + Self::hash(y))
+    }
+
+    /// `hash(x + hash(y + hash(z)))`, Olano's 3D chain.
+    #[inline]
+    #[must_use]
+    pub const fn hash3(x: i32, y: i32, z: i32) -> u32 {
+        Self::step(Self::reduce(x) + Self::hash2(y, z))
+    }
+
+    /// `hash(x + hash(y + hash(z + hash(w))))`, the 4D chain.
+    #[inline]
+    #[must_use]
+    pub const fn hash4(x: i32, y: i32, z: i32, w: i32) -> u32 {
+        Self::step(Self::reduce(x) + Self::hash3(y, z, w))
+    }
+
+    /// `i mod M` in floating point, Olano's `i − floor(i/M)·M`, for an integer-valued `i`.
+    ///
+    /// `i/M` is rounded, so `floor` can be off by one next to a multiple of `M`; one correction
+    /// each way makes it exact for `|i| ≤ 2²⁴`, where every product `floor(i/M)·M` is exact.
+    /// Larger integers (all `f32` beyond 2²⁴ are integers) use `fmod`, which is always exact.
+    /// A non-integer `i` is floored first; NaN and ±∞ reduce to 0.
+    #[inline]
+    #[must_use]
+    pub fn reduce_f32(i: f32) -> f32 {
+        let () = Self::VALID;
+        let m = M as f32;
+        if !(-16_777_216.0..=16_777_216.0).contains(&i) {
+            if !i.is_finite() {
+                return 0.0;
+            }
+            let r = libm::fmodf(i, m);
+            return if r < 0.0 { r + m } else { r };
+        }
+        let i = libm::floorf(i);
+        let r = i - libm::floorf(i / m) * m;
+        if r < 0.0 {
+            r + m
+        } else if r >= m {
+            r - m
+        } else {
+            r
+        }
+    }
+
+    /// The hash computed entirely in `f32`: `reduce_f32(reduce_f32(i)²)`. Equal to
+    /// `hash(i) as f32` for every integer `i32` that `f32` holds exactly, and defined (and
+    /// exact against a 64-bit reference) for every `f32`.
+    #[inline]
+    #[must_use]
+    pub fn hash_f32(i: f32) -> f32 {
+        let r = Self::reduce_f32(i);
+        Self::reduce_f32(r * r)
+    }
+}

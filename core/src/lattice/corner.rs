@@ -1,0 +1,192 @@
+//! Olano's corner-gradient noises (Olano 2005, "Modified Noise for Evaluation on Graphics
+//! Hardware", §3.2–3.3): cNoise and mNoise.
+//!
+//! Both take gradients on the corners of the cube, `(±1, ±1, ±1)`, one sign per hash bit, so the
+//! gradient's dot product in D dimensions is the same sum as in D+1 dimensions with the extra
+//! offset 0 (§3.2). With a hash chained last-axis-innermost, `hash(x + hash(y + hash(z)))`, the
+//! 3D hash at `z = 0` is the 2D hash too, which makes the noise *dimension reducible*:
+//! `noise3(x, y, 0) == noise2(x, y)`, bit for bit.
+
+use super::kernel::{MAX_CORNERS, Quintic, hash_corners_last_first};
+use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
+use crate::Real;
+use crate::hash::{Bbs, Permutation, seed::splitmix64};
+
+/// `Σ_a ±d_a` with the sign of axis `a` from bit `a` of `h`.
+#[inline]
+fn corner_dot<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
+    let mut sum = signed(h, 0, d[0]);
+    for (a, x) in d.iter().enumerate().skip(1) {
+        sum = sum + signed(h, a as u32, *x);
+    }
+    sum
+}
+
+#[inline]
+fn corner_gradient<R: Real, const D: usize>(h: u32) -> [R; D] {
+    let mut g = [R::ZERO; D];
+    for (a, ga) in g.iter_mut().enumerate() {
+        *ga = signed(h, a as u32, R::ONE);
+    }
+    g
+}
+
+/// Olano's **mNoise**: corner gradients and the Blum-Blum-Shub hash `x² mod M`, no tables at all.
+///
+/// * **Hash**: `hash(x + hash(y + hash(z + hash(w))))` with `hash(x) = x² mod M`
+///   ([`Bbs`]), every cell reduced mod `M`, so the noise is periodic with period `M` on every
+///   axis (`noise(x + M, y) == noise(x, y)`, bit for bit in fixed point).
+/// * **Gradient**: `(±1, …, ±1)`, the sign of axis `a` from bit `a` of the hash.
+/// * **Seed**: the seed picks a translation `o ∈ [0, M)⁴` of the lattice and a sign mask for
+///   the gradient axes, both from SplitMix64 of the seed; seed 0 is Olano's noise unchanged
+///   (no translation, no flips). A lower dimension is the slice at 0 of the 4D noise of the same
+///   seed, so dimension reducibility holds for every seed. With `M = 61` there are at most
+///   `61^D · 2^D` distinct seeded noises per dimension: seeds are cheap, not unlimited.
+/// * **Range**: `|n| ≤ D/2`, reached at cell centres when all corner gradients point outward.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{I16F16, Noise, lattice::MNoise};
+///
+/// let m = MNoise::<61>::new(9);
+/// let x = I16F16::from_num(12.375);
+/// let y = I16F16::from_num(-3.5);
+/// let z = I16F16::ZERO;
+/// // Dimension reducible and periodic, bit for bit.
+/// assert_eq!(m.sample([x, y, z]), m.sample([x, y]));
+/// assert_eq!(m.sample([x + I16F16::from_num(61), y]), m.sample([x, y]));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct MNoise<const M: u32 = 61> {
+    offset: [u32; 4],
+    flip: u32,
+    inner: [u32; 4],
+}
+
+impl<const M: u32> MNoise<M> {
+    /// mNoise with modulus `M` for `seed` (0: Olano's noise).
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        let (offset, flip) = if seed == 0 {
+            ([0; 4], 0)
+        } else {
+            let (_, r) = splitmix64(seed as u64);
+            let mut o = [0u32; 4];
+            let mut a = 0;
+            while a < 4 {
+                o[a] = ((r >> (12 * a)) & 0xFFF) as u32 % M;
+                a += 1;
+            }
+            (o, (r >> 60) as u32)
+        };
+        // inner[D-1]: fold of the missing axes D..4 at cell 0, last axis innermost.
+        let mut inner = [0u32; 4];
+        let mut h = 0u32;
+        let mut a = 3;
+        while a > 0 {
+            h = Bbs::<M>::step(h + offset[a]);
+            inner[a - 1] = h;
+            a -= 1;
+        }
+        Self { offset, flip, inner }
+    }
+
+    /// The period on every axis.
+    pub const PERIOD: u32 = M;
+}
+
+impl<const M: u32> Default for MNoise<M> {
+    fn default() -> Self {
+        Self::new(0)
+    }
+}
+
+impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
+    type Fade = Quintic;
+    #[inline]
+    fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
+        let mut cells = [0u32; D];
+        for a in 0..D {
+            // In 0..M, so `c + 1 + h` below stays under 2M + 1.
+            cells[a] = (Bbs::<M>::reduce(cell[a]) + self.offset[a]) % M;
+        }
+        hash_corners_last_first(cells, self.inner[D - 1], |h, c| Bbs::<M>::step(h + c))
+    }
+    #[inline]
+    fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
+        corner_dot(h ^ self.flip, d)
+    }
+    #[inline]
+    fn gradient<R: Real>(&self, h: u32) -> [R; D] {
+        corner_gradient(h ^ self.flip)
+    }
+}
+
+gradient_noise_impls!(MNoise<M>, [const M: u32], half_dims);
+
+/// Olano's **cNoise**: corner gradients with a permutation hash.
+///
+/// * **Hash**: the seed's [`Permutation`] (seed 0: Perlin's 2002 table), chained last axis
+///   innermost, `p[(x + p[(y + p[(z + p[w]) & 255]) & 255]) & 255]`, cells mod 256 (period 256).
+///   As for [`MNoise`], a lower dimension is the slice at 0 of the higher one, bit for bit (Olano
+///   notes the plain permutation chain reduces only up to an offset `permute⁻¹(0)`; starting each
+///   dimension's chain from the folded missing axes removes that offset).
+/// * **Gradient**: `(±1, …, ±1)` from the low bits of the hash.
+/// * **Range**: `|n| ≤ D/2`.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Noise, lattice::CNoise};
+///
+/// let c = CNoise::new(0);
+/// assert_eq!(c.sample([0.3f32, 0.6, 0.0, 0.0]), c.sample([0.3f32, 0.6]));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CNoise {
+    perm: Permutation,
+    inner: [u32; 4],
+}
+
+impl CNoise {
+    /// cNoise for `seed`.
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        let perm = Permutation::new(seed);
+        let mut inner = [0u32; 4];
+        let mut h = 0u32;
+        let mut a = 3;
+        while a > 0 {
+            h = perm.get(h);
+            inner[a - 1] = h;
+            a -= 1;
+        }
+        Self { perm, inner }
+    }
+}
+
+impl Default for CNoise {
+    fn default() -> Self {
+        Self::new(0)
+    }
+}
+
+impl<const D: usize> GradientLattice<D> for CNoise {
+    type Fade = Quintic;
+    #[inline]
+    fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
+        let cells = cell.map(|c| (c & 255) as u32);
+        hash_corners_last_first(cells, self.inner[D - 1], |h, c| self.perm.get(h + c))
+    }
+    #[inline]
+    fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
+        corner_dot(h, d)
+    }
+    #[inline]
+    fn gradient<R: Real>(&self, h: u32) -> [R; D] {
+        corner_gradient(h)
+    }
+}
+
+gradient_noise_impls!(CNoise, [], half_dims);

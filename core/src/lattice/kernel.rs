@@ -1,0 +1,196 @@
+//! The machinery every lattice noise shares: splitting a point into a cell and a fraction,
+//! hashing the `2^D` corners of the cell with shared prefixes, fading, and multilinear
+//! interpolation (with its analytic gradient).
+//!
+//! Corners are indexed by a bit mask: bit `a` set means the upper corner along axis `a`.
+//! Interpolation runs along axis 0 first, then 1, …, exactly in the order of Perlin's reference
+//! code, so that f64 results match it bit for bit.
+
+use crate::Real;
+
+/// Corners of a 4D cell, the most any noise here uses.
+pub(crate) const MAX_CORNERS: usize = 16;
+
+/// Splits every coordinate into a cell and a fraction in `[0, 1)` (see [`Real::split`]).
+#[inline]
+pub(crate) fn split_point<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; D]) {
+    const { assert!(D >= 1 && D <= 4, "lattice noises have 1 to 4 dimensions") };
+    let mut cell = [0i32; D];
+    let mut frac = [R::ZERO; D];
+    for a in 0..D {
+        (cell[a], frac[a]) = p[a].split();
+    }
+    (cell, frac)
+}
+
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)` (this form, not `(1−t)a + tb`, for his exact values).
+#[inline]
+pub(crate) fn lerp<R: Real>(t: R, a: R, b: R) -> R {
+    a + t * (b - a)
+}
+
+/// A fade curve applied to each fraction before interpolating.
+pub(crate) trait Fade {
+    /// The curve at `t` in `[0, 1)`.
+    fn fade<R: Real>(t: R) -> R;
+    /// Its derivative.
+    fn fade_derivative<R: Real>(t: R) -> R;
+}
+
+/// Perlin's 2002 quintic `6t⁵ − 15t⁴ + 10t³` (C² continuous).
+pub(crate) struct Quintic;
+
+impl Fade for Quintic {
+    #[inline]
+    fn fade<R: Real>(t: R) -> R {
+        // Perlin's operation order: t·t·t·(t·(t·6 − 15) + 10).
+        t * t * t * (t * (t * R::from_i32(6) - R::from_i32(15)) + R::from_i32(10))
+    }
+    #[inline]
+    fn fade_derivative<R: Real>(t: R) -> R {
+        // 30 t² (t − 1)²
+        let u = t * (t - R::ONE);
+        u * u * R::from_i32(30)
+    }
+}
+
+/// Perlin's 1985 cubic `3t² − 2t³` (C¹ continuous).
+pub(crate) struct Cubic;
+
+impl Fade for Cubic {
+    #[inline]
+    fn fade<R: Real>(t: R) -> R {
+        t * t * (R::from_i32(3) - t - t)
+    }
+    #[inline]
+    fn fade_derivative<R: Real>(t: R) -> R {
+        // 6 t (1 − t)
+        t * (R::ONE - t) * R::from_i32(6)
+    }
+}
+
+/// Applies a fade curve to every fraction.
+#[inline]
+pub(crate) fn fade_all<F: Fade, R: Real, const D: usize>(f: [R; D]) -> [R; D] {
+    f.map(F::fade)
+}
+
+/// Hashes every corner of a cell with a chain that takes axis 0 innermost:
+/// `h = step(…step(step(start, x), y)…)`, Perlin's `p[p[p[x] + y] + z]` order.
+/// `cells` are already reduced to the hash's period; each axis step is shared by all corners
+/// with the same lower axes, so 3D costs 2 + 4 + 8 steps.
+#[inline]
+pub(crate) fn hash_corners_x_first<const D: usize>(
+    cells: [u32; D],
+    start: u32,
+    step: impl Fn(u32, u32) -> u32,
+) -> [u32; MAX_CORNERS] {
+    let mut h = [0u32; MAX_CORNERS];
+    h[0] = start;
+    for a in 0..D {
+        let bit = 1 << a;
+        for m in 0..bit {
+            h[m | bit] = step(h[m], cells[a] + 1);
+            h[m] = step(h[m], cells[a]);
+        }
+    }
+    h
+}
+
+/// Hashes every corner of a cell with a chain that takes the last axis innermost:
+/// `h = step(…step(step(start, w), z)…, x)`, Olano's `hash(x + hash(y + hash(z)))` order, which
+/// makes a noise with the last coordinate 0 equal to the noise of one dimension less.
+#[inline]
+pub(crate) fn hash_corners_last_first<const D: usize>(
+    cells: [u32; D],
+    start: u32,
+    step: impl Fn(u32, u32) -> u32,
+) -> [u32; MAX_CORNERS] {
+    let mut h = [0u32; MAX_CORNERS];
+    h[0] = start;
+    for a in (0..D).rev() {
+        let bit = 1 << a;
+        for j in 0..(1 << (D - 1 - a)) {
+            let m = j << (a + 1);
+            h[m | bit] = step(h[m], cells[a] + 1);
+            h[m] = step(h[m], cells[a]);
+        }
+    }
+    h
+}
+
+/// The offset from corner `m` to the point: `f − corner`.
+#[inline]
+pub(crate) fn corner_offset<R: Real, const D: usize>(f: &[R; D], f1: &[R; D], m: usize) -> [R; D] {
+    let mut d = [R::ZERO; D];
+    for a in 0..D {
+        d[a] = if m >> a & 1 == 0 { f[a] } else { f1[a] };
+    }
+    d
+}
+
+/// `f − 1` for every fraction.
+#[inline]
+pub(crate) fn minus_one<R: Real, const D: usize>(f: &[R; D]) -> [R; D] {
+    f.map(|x| x - R::ONE)
+}
+
+/// Multilinear interpolation of `2^D` corner values along axis 0, then 1, … with weights `t`.
+#[inline]
+pub(crate) fn interpolate<R: Real, const D: usize>(mut v: [R; MAX_CORNERS], t: &[R; D]) -> R {
+    let mut n = 1 << D;
+    for ta in t {
+        n >>= 1;
+        for j in 0..n {
+            v[j] = lerp(*ta, v[2 * j], v[2 * j + 1]);
+        }
+    }
+    v[0]
+}
+
+/// `∂/∂t_axis` of [`interpolate`] times `dt`: the same reduction, with the lerp along `axis`
+/// replaced by `dt · (b − a)`.
+#[inline]
+fn interpolate_derivative<R: Real, const D: usize>(
+    mut v: [R; MAX_CORNERS],
+    t: &[R; D],
+    axis: usize,
+    dt: R,
+) -> R {
+    let mut n = 1 << D;
+    for (a, ta) in t.iter().enumerate() {
+        n >>= 1;
+        for j in 0..n {
+            v[j] = if a == axis {
+                dt * (v[2 * j + 1] - v[2 * j])
+            } else {
+                lerp(*ta, v[2 * j], v[2 * j + 1])
+            };
+        }
+    }
+    v[0]
+}
+
+/// Value and gradient of a gradient-noise cell: `n = Σ_c W_c(s) (g_c · d_c)`, so
+/// `∂n/∂f_a = Σ_c ∂W_c/∂f_a (g_c · d_c) + Σ_c W_c g_{c,a}`.
+///
+/// `dots[m] = g_m · d_m`, `grads[m] = g_m`, `s` the faded fractions and `ds` the fade's
+/// derivative at each fraction. The value is computed exactly as [`interpolate`] does.
+#[inline]
+pub(crate) fn interpolate_with_gradient<R: Real, const D: usize>(
+    dots: [R; MAX_CORNERS],
+    grads: &[[R; D]; MAX_CORNERS],
+    s: &[R; D],
+    ds: &[R; D],
+) -> (R, [R; D]) {
+    let value = interpolate(dots, s);
+    let mut gradient = [R::ZERO; D];
+    for (a, g) in gradient.iter_mut().enumerate() {
+        let mut component = [R::ZERO; MAX_CORNERS];
+        for m in 0..(1 << D) {
+            component[m] = grads[m][a];
+        }
+        *g = (interpolate_derivative(dots, s, a, ds[a]) + interpolate(component, s)).canonical();
+    }
+    (value.canonical(), gradient)
+}

@@ -1,0 +1,132 @@
+//! Lattice noises: a value or a gradient at every integer point, hashed from the point's
+//! coordinates, blended across each cell by a fade curve.
+//!
+//! | type | paper | hash | gradients | fade |
+//! |---|---|---|---|---|
+//! | [`Perlin`] | Perlin 2002; pbrt §10.6.1 | [`Permutation`](crate::hash::Permutation), x innermost | Perlin's 12 cube edges (+4 repeats) | quintic |
+//! | [`OriginalPerlin`] | Perlin 1985 | permutation, x innermost | a table of 256 random unit vectors | cubic |
+//! | [`ValueNoise`] | pbrt §10.6 intro; Lewis 1989 §2 | permutation, x innermost | none: a value in `[-1, 1]` per point | quintic |
+//! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
+//! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
+//!
+//! Every type implements [`Noise`](crate::Noise) for 1 to 4 dimensions and every
+//! [`Real`](crate::Real); the gradient noises also implement
+//! [`NoiseGradient`](crate::NoiseGradient).
+//!
+//! # Output bounds
+//!
+//! For a gradient noise, `n(f) = Σ_c W_c(f) g_c·(f − c)` with weights `W_c ≥ 0` summing to 1.
+//! When every gradient component satisfies `|g_a| ≤ 1`,
+//! `|n| ≤ Σ_a Σ_c W_c |f_a − c_a| = Σ_a [(1 − s_a) f_a + s_a (1 − f_a)] ≤ D/2`
+//! (each bracket is at most ½, reached at `f_a = ½`). With unit gradients, Jensen's inequality
+//! gives `|n| ≤ (Σ_c W_c |f − c|²)^½ ≤ √D/2`. These are the [`Noise::amplitude_bound`]s; the
+//! measured maxima are in each type's docs.
+//!
+//! [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
+
+mod corner;
+pub(crate) mod kernel;
+mod original;
+mod perlin;
+mod value;
+
+pub use corner::{CNoise, MNoise};
+pub use original::OriginalPerlin;
+pub use perlin::Perlin;
+pub use value::ValueNoise;
+
+use crate::Real;
+use kernel::{
+    Fade, MAX_CORNERS, corner_offset, fade_all, interpolate, interpolate_with_gradient, minus_one,
+    split_point,
+};
+
+/// What distinguishes one gradient noise from another: how corners are hashed, which gradient a
+/// hash selects, and the fade curve. The sampling itself is shared ([`sample_gradient`]).
+pub(crate) trait GradientLattice<const D: usize> {
+    /// The fade curve.
+    type Fade: Fade;
+    /// The hash of each corner of `cell`, indexed by corner bit mask.
+    fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS];
+    /// `gradient(h) · d`.
+    fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R;
+    /// The gradient vector selected by `h`.
+    fn gradient<R: Real>(&self, h: u32) -> [R; D];
+}
+
+/// Samples a gradient noise at `p`.
+#[inline]
+pub(crate) fn sample_gradient<L: GradientLattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    p: [R; D],
+) -> R {
+    let (cell, f) = split_point(p);
+    let h = lattice.corner_hashes(cell);
+    let f1 = minus_one(&f);
+    let mut dots = [R::ZERO; MAX_CORNERS];
+    for (m, dot) in dots.iter_mut().enumerate().take(1 << D) {
+        *dot = lattice.dot(h[m], &corner_offset(&f, &f1, m));
+    }
+    interpolate(dots, &fade_all::<L::Fade, R, D>(f)).canonical()
+}
+
+/// Samples a gradient noise and its analytic gradient at `p`.
+#[inline]
+pub(crate) fn sample_gradient_with_gradient<L: GradientLattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    p: [R; D],
+) -> (R, [R; D]) {
+    let (cell, f) = split_point(p);
+    let h = lattice.corner_hashes(cell);
+    let f1 = minus_one(&f);
+    let mut dots = [R::ZERO; MAX_CORNERS];
+    let mut grads = [[R::ZERO; D]; MAX_CORNERS];
+    for m in 0..(1 << D) {
+        dots[m] = lattice.dot(h[m], &corner_offset(&f, &f1, m));
+        grads[m] = lattice.gradient(h[m]);
+    }
+    let s = fade_all::<L::Fade, R, D>(f);
+    let ds = f.map(L::Fade::fade_derivative);
+    interpolate_with_gradient(dots, &grads, &s, &ds)
+}
+
+/// Implements `Noise` and `NoiseGradient` for a gradient lattice type, in every dimension it
+/// has a `GradientLattice` for.
+macro_rules! gradient_noise_impls {
+    ($ty:ty, [$($generics:tt)*], $bound:expr) => {
+        impl<R: crate::Real, const D: usize, $($generics)*> crate::Noise<R, D> for $ty
+        where
+            $ty: crate::lattice::GradientLattice<D>,
+        {
+            #[inline]
+            fn sample(&self, p: [R; D]) -> R {
+                crate::lattice::sample_gradient(self, p)
+            }
+            fn amplitude_bound(&self, dims: usize) -> f32 {
+                $bound(dims)
+            }
+        }
+
+        impl<R: crate::Real, const D: usize, $($generics)*> crate::NoiseGradient<R, D> for $ty
+        where
+            $ty: crate::lattice::GradientLattice<D>,
+        {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+                crate::lattice::sample_gradient_with_gradient(self, p)
+            }
+        }
+    };
+}
+pub(crate) use gradient_noise_impls;
+
+/// The bound `D/2` for gradients whose components lie in `[-1, 1]` (see the module docs).
+pub(crate) fn half_dims(dims: usize) -> f32 {
+    dims as f32 * 0.5
+}
+
+/// Adds `±x` as bit `bit` of `h` says (set: subtract).
+#[inline]
+pub(crate) fn signed<R: Real>(h: u32, bit: u32, x: R) -> R {
+    if h >> bit & 1 == 0 { x } else { -x }
+}

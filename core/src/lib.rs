@@ -1,0 +1,63 @@
+//! # bandnoise
+//!
+//! Procedural noise that is band-limited, the same on every target, and never panics: from a
+//! Cortex-M0 without an FPU to a browser tab.
+//!
+//! Graphics research has spent forty years making noise better: Perlin's 1985 gradient noise and
+//! its 2002 improvement, Olano's table-free modified noise (2005), Cook and DeRose's wavelet noise
+//! (2005). bandnoise implements them from the papers, once, over one numeric trait, so the same
+//! noise runs in `f32`, `f64` and fixed point ([`I16F16`]).
+//!
+//! * [`Real`]: the sealed numeric trait (`f32`, `f64`, [`I16F16`]).
+//! * [`Noise`], [`NoiseGradient`]: the sampling traits every noise implements.
+//! * [`hash`]: Olano's Blum-Blum-Shub hash and Perlin's permutation.
+//! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D.
+//! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
+//!
+//! # Example
+//!
+//! ```
+//! use bandnoise::{I16F16, Noise, fractal::{Fractal, Octaves}, lattice::{MNoise, Perlin}};
+//!
+//! // Perlin's reference value, bit for bit.
+//! assert_eq!(Perlin::new(0).sample([3.14f64, 42.0, 7.0]), 0.13691995878400012);
+//!
+//! // Olano's mNoise in fixed point: no tables, no floating point.
+//! let m = MNoise::<61>::new(1);
+//! let v: I16F16 = m.sample([I16F16::from_num(1.5), I16F16::from_num(2.25)]);
+//! assert!(v.abs() <= I16F16::ONE);
+//!
+//! // Any noise in a fractal sum.
+//! let fbm = Fractal::fbm(m, Octaves::default());
+//! let _: f32 = fbm.sample([0.1, 0.2, 0.3]);
+//! ```
+//!
+//! # Guarantees
+//!
+//! * `#![no_std]`, no allocation, no `unsafe`.
+//! * Sampling is total: every input, NaN and infinities included, gives a documented value and
+//!   never a panic (see [`Noise`]).
+//! * `f32` and `f64` results use only IEEE `+ − × ÷` (and `libm` where more is needed), so they
+//!   are bit-identical on every target; fixed point is integer arithmetic and bit-identical
+//!   everywhere.
+#![no_std]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+mod error;
+pub mod fractal;
+pub mod hash;
+pub mod lattice;
+mod noise;
+mod real;
+
+pub use error::Error;
+pub use noise::{Noise, NoiseGradient};
+pub use real::{I16F16, Real};
+
+/// The traits and types most programs need: `use bandnoise::prelude::*;`.
+pub mod prelude {
+    pub use crate::fractal::{Fractal, Kind, Octaves};
+    pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+    pub use crate::{I16F16, Noise, NoiseGradient, Real};
+}

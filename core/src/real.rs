@@ -1,0 +1,380 @@
+//! The one numeric trait every noise is written against.
+//!
+//! [`Real`] is sealed and implemented for `f32`, `f64` and [`I16F16`]. Each noise is written once,
+//! generically, and the number type is chosen by the caller (a type, never a cargo feature, so two
+//! crates in one build cannot change each other's results).
+//!
+//! # Rules the implementations keep
+//!
+//! * **Bit-identical floats on every target.** Kernels use only `+ − × ÷`, which IEEE 754 makes
+//!   deterministic, and never `mul_add`. The few functions beyond them (`fmod`, `log2`) go through
+//!   `libm`, never the platform's math library.
+//! * **Fixed point never panics.** `fixed`'s operators panic on overflow in debug builds and wrap
+//!   in release. Kernel code uses the plain operators only on values whose range is proved (a
+//!   fraction in `[0, 1)`, a gradient component in `[-1, 1]`, a sum of a few of those); anything a
+//!   user scales (octave frequencies, amplitudes, sums) goes through [`Real::saturating_add`],
+//!   [`Real::saturating_mul`] or [`Real::wrapping_mul`], so debug and release agree.
+//! * **Coordinates split into a cell and a fraction** ([`Real::split`]) before any arithmetic, so
+//!   the kernel only ever computes with fractions in `[0, 1)` and fixed point cannot overflow
+//!   whatever the coordinate.
+
+use core::fmt::Debug;
+use core::ops::{Add, Mul, Neg, Sub};
+
+pub use fixed::types::I16F16;
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f32 {}
+    impl Sealed for f64 {}
+    impl Sealed for fixed::types::I16F16 {}
+}
+
+/// The arithmetic the noises need, for `f32`, `f64` and [`I16F16`].
+///
+/// The trait is sealed: the kernels' proofs of range (see the module docs) hold for these three
+/// types only.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{I16F16, Real};
+///
+/// // Every coordinate splits into a cell and a fraction in [0, 1).
+/// assert_eq!((-1.25f32).split(), (-2, 0.75));
+/// assert_eq!(I16F16::from_f32(-1.25).split(), (-2, I16F16::from_f32(0.75)));
+/// // Non-finite coordinates are the origin.
+/// assert_eq!(f32::NAN.split(), (0, 0.0));
+/// ```
+pub trait Real:
+    sealed::Sealed
+    + Copy
+    + PartialEq
+    + PartialOrd
+    + Debug
+    + Default
+    + Send
+    + Sync
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Neg<Output = Self>
+{
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// The largest finite value.
+    const MAX: Self;
+
+    /// Converts from `f32`: rounds to nearest, saturates at the type's range, NaN becomes 0.
+    fn from_f32(v: f32) -> Self;
+    /// Converts to `f32` (rounding to nearest).
+    fn to_f32(self) -> f32;
+    /// Converts to `f64` (exact for all three types).
+    fn to_f64(self) -> f64;
+    /// Converts a small integer, saturating at the type's range.
+    fn from_i32(i: i32) -> Self;
+    /// `num · 2^-shift`, exact whenever the result is representable (used for tables of
+    /// gradients and lattice values, so that every number type starts from the same constants).
+    fn from_ratio(num: i32, shift: u32) -> Self;
+
+    /// Splits a coordinate into its lattice cell `floor(x)` and the fraction `x − floor(x)` in
+    /// `[0, 1)`.
+    ///
+    /// Defined for every input:
+    /// * NaN and ±∞ give `(0, 0)`: a non-finite coordinate samples the origin.
+    /// * `-0.0` gives `(0, 0)`.
+    /// * A negative number so small that `x − floor(x)` rounds to 1 (e.g. `-1e-30`) gives the
+    ///   next cell with fraction 0, the nearest representable point.
+    /// * A cell outside `i32` wraps modulo 2³² (two's complement), like integer overflow in a
+    ///   hash; such floats are integers anyway, so the fraction is 0.
+    fn split(self) -> (i32, Self);
+
+    /// Absolute value (saturating at `MAX` for fixed point's most negative value).
+    fn abs(self) -> Self;
+    /// Addition that saturates at the type's range in fixed point (plain IEEE `+` for floats).
+    fn saturating_add(self, o: Self) -> Self;
+    /// Multiplication that saturates in fixed point (plain IEEE `×` for floats).
+    fn saturating_mul(self, o: Self) -> Self;
+    /// Multiplication that wraps modulo the integer range in fixed point (plain IEEE `×` for
+    /// floats). Scaling a coordinate by an octave frequency uses it: a wrapped fixed-point
+    /// coordinate still lands on a lattice cell, so the result is defined.
+    fn wrapping_mul(self, o: Self) -> Self;
+    /// Base-2 logarithm. For `x ≤ 0` (and NaN) it returns the most negative value of the type
+    /// (−∞ for floats, `MIN` for fixed point); `+∞` gives `+∞`.
+    fn log2(self) -> Self;
+    /// Whether the value is NaN (never, for fixed point).
+    fn is_nan(self) -> bool;
+    /// Turns `-0.0` into `+0.0` and leaves every other value unchanged, so that results that are
+    /// equal as numbers are equal bit for bit.
+    fn canonical(self) -> Self;
+
+    /// `self` clamped to `[lo, hi]`; NaN gives `lo`.
+    #[inline]
+    #[must_use]
+    fn clamp_to(self, lo: Self, hi: Self) -> Self {
+        if self >= lo {
+            if self <= hi { self } else { hi }
+        } else {
+            lo
+        }
+    }
+}
+
+/// Splits a float whose integer part does not fit `i32`, or that is not finite.
+#[cold]
+fn split_far(x: f64) -> (i32, f64) {
+    if !x.is_finite() {
+        return (0, 0.0);
+    }
+    // |x| >= 2^31 > 2^53 is false for f64 in general, so keep the fraction; fmod is exact.
+    let fl = libm::floor(x);
+    let frac = x - fl;
+    let wrapped = libm::fmod(fl, 4_294_967_296.0); // exact, in (-2^32, 2^32)
+    ((wrapped as i64) as i32, frac)
+}
+
+macro_rules! impl_real_float {
+    ($t:ty, $log2:path) => {
+        impl Real for $t {
+            const ZERO: Self = 0.0;
+            const ONE: Self = 1.0;
+            const MAX: Self = <$t>::MAX;
+
+            #[inline]
+            fn from_f32(v: f32) -> Self {
+                v as $t
+            }
+            #[inline]
+            fn to_f32(self) -> f32 {
+                self as f32
+            }
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self as f64
+            }
+            #[inline]
+            fn from_i32(i: i32) -> Self {
+                i as $t
+            }
+            #[inline]
+            fn from_ratio(num: i32, shift: u32) -> Self {
+                // Dividing by a power of two is exact (barring underflow, which cannot happen
+                // for the shifts used here).
+                num as $t / (1u64 << shift) as $t
+            }
+            #[inline]
+            fn split(self) -> (i32, Self) {
+                // In range, a truncating cast and one correction give floor() without libm;
+                // `as` is defined (saturating, NaN → 0) on every target.
+                if self >= -2_147_483_648.0 && self < 2_147_483_648.0 {
+                    let t = self as i32;
+                    let cell = if (t as $t) > self { t - 1 } else { t };
+                    // Exact: both are in the same binade or the result is an integer.
+                    let frac = self - cell as $t;
+                    if frac >= 1.0 {
+                        (cell.wrapping_add(1), 0.0)
+                    } else {
+                        // `+ 0.0` turns the -0.0 of -0.0 - 0.0 into +0.0.
+                        (cell, frac + 0.0)
+                    }
+                } else {
+                    let (cell, frac) = split_far(self as f64);
+                    (cell, frac as $t)
+                }
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                if self < 0.0 { -self } else { self }
+            }
+            #[inline]
+            fn saturating_add(self, o: Self) -> Self {
+                self + o
+            }
+            #[inline]
+            fn saturating_mul(self, o: Self) -> Self {
+                self * o
+            }
+            #[inline]
+            fn wrapping_mul(self, o: Self) -> Self {
+                self * o
+            }
+            #[inline]
+            fn log2(self) -> Self {
+                if self > 0.0 {
+                    $log2(self)
+                } else {
+                    <$t>::NEG_INFINITY
+                }
+            }
+            #[inline]
+            fn is_nan(self) -> bool {
+                self != self
+            }
+            #[inline]
+            fn canonical(self) -> Self {
+                self + 0.0
+            }
+        }
+    };
+}
+
+impl_real_float!(f32, libm::log2f);
+impl_real_float!(f64, libm::log2);
+
+/// Base-2 logarithm of a positive I16F16 given by its raw bits, by the exact bit-by-bit
+/// method (repeated squaring of the mantissa), so it needs no floating point at all.
+fn log2_fixed_bits(bits: i32) -> i32 {
+    debug_assert!(bits > 0);
+    let msb = 31 - bits.leading_zeros() as i32; // bits in [2^msb, 2^(msb+1))
+    let int_part = msb - 16;
+    // Mantissa m = bits / 2^msb in [1, 2), held in Q1.30.
+    let mut m: u64 = ((bits as u64) << 30) >> msb;
+    let mut frac: i32 = 0;
+    for k in (0..16).rev() {
+        m = (m * m) >> 30;
+        if m >= 2 << 30 {
+            m >>= 1;
+            frac |= 1 << k;
+        }
+    }
+    (int_part << 16) | frac
+}
+
+impl Real for I16F16 {
+    const ZERO: Self = I16F16::ZERO;
+    const ONE: Self = I16F16::ONE;
+    const MAX: Self = I16F16::MAX;
+
+    #[inline]
+    fn from_f32(v: f32) -> Self {
+        if v.is_nan() {
+            I16F16::ZERO
+        } else {
+            I16F16::saturating_from_num(v)
+        }
+    }
+    #[inline]
+    fn to_f32(self) -> f32 {
+        self.to_num::<f32>()
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self.to_num::<f64>()
+    }
+    #[inline]
+    fn from_i32(i: i32) -> Self {
+        I16F16::saturating_from_num(i)
+    }
+    #[inline]
+    fn from_ratio(num: i32, shift: u32) -> Self {
+        let bits = if shift <= 16 {
+            (num as i64) << (16 - shift)
+        } else {
+            (num as i64) >> (shift - 16)
+        };
+        I16F16::from_bits(bits.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+    }
+    #[inline]
+    fn split(self) -> (i32, Self) {
+        let bits = self.to_bits();
+        (bits >> 16, I16F16::from_bits(bits & 0xFFFF))
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        self.saturating_abs()
+    }
+    #[inline]
+    fn saturating_add(self, o: Self) -> Self {
+        I16F16::saturating_add(self, o)
+    }
+    #[inline]
+    fn saturating_mul(self, o: Self) -> Self {
+        I16F16::saturating_mul(self, o)
+    }
+    #[inline]
+    fn wrapping_mul(self, o: Self) -> Self {
+        I16F16::wrapping_mul(self, o)
+    }
+    #[inline]
+    fn log2(self) -> Self {
+        if self.to_bits() > 0 {
+            I16F16::from_bits(log2_fixed_bits(self.to_bits()))
+        } else {
+            I16F16::MIN
+        }
+    }
+    #[inline]
+    fn is_nan(self) -> bool {
+        false
+    }
+    #[inline]
+    fn canonical(self) -> Self {
+        self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn split_floats_edges() {
+        assert_eq!(3.25f32.split(), (3, 0.25));
+        assert_eq!((-3.25f64).split(), (-4, 0.75));
+        assert_eq!((-0.0f32).split().1.to_bits(), 0.0f32.to_bits());
+        assert_eq!((-1e-30f32).split(), (0, 0.0));
+        assert_eq!(f32::NAN.split(), (0, 0.0));
+        assert_eq!(f64::INFINITY.split(), (0, 0.0));
+        assert_eq!(f32::NEG_INFINITY.split(), (0, 0.0));
+        // The largest f32 below 2^31 and -2^31 itself stay in range.
+        assert_eq!(2_147_483_520.0f32.split(), (2_147_483_520, 0.0));
+        assert_eq!((-2_147_483_648.0f32).split(), (i32::MIN, 0.0));
+        // f64 can hold a fraction at i32::MAX.
+        assert_eq!(2_147_483_647.5f64.split(), (i32::MAX, 0.5));
+        // Beyond i32 the cell wraps modulo 2^32.
+        assert_eq!(2_147_483_648.0f32.split(), (i32::MIN, 0.0));
+        assert_eq!(4_294_967_296.0f64.split(), (0, 0.0));
+        assert_eq!((-4_294_967_297.0f64).split(), (-1, 0.0));
+        let (_, f) = 1e30f32.split();
+        assert_eq!(f, 0.0);
+        let tiny = f32::from_bits(1); // smallest subnormal
+        assert_eq!(tiny.split(), (0, tiny));
+        assert_eq!((-tiny).split(), (0, 0.0));
+    }
+
+    #[test]
+    fn split_fixed() {
+        assert_eq!(I16F16::MIN.split(), (-32768, I16F16::ZERO));
+        assert_eq!(I16F16::MAX.split(), (32767, I16F16::from_bits(0xFFFF)));
+        assert_eq!(I16F16::from_f32(-0.5).split(), (-1, I16F16::from_f32(0.5)));
+    }
+
+    #[test]
+    fn fixed_log2_matches_f64() {
+        for bits in (1..i32::MAX).step_by(7919) {
+            let x = I16F16::from_bits(bits);
+            let got = x.log2().to_f64();
+            let want = libm::log2(x.to_f64());
+            // Truncated to 16 fraction bits, plus the truncation of each squaring.
+            assert!((got - want).abs() <= 2.0 / 65536.0, "{bits}: {got} vs {want}");
+        }
+        assert_eq!(I16F16::ZERO.log2(), I16F16::MIN);
+        assert_eq!(I16F16::from_i32(-3).log2(), I16F16::MIN);
+        assert_eq!(I16F16::ONE.log2(), I16F16::ZERO);
+        assert_eq!(I16F16::from_i32(1024).log2(), I16F16::from_i32(10));
+    }
+
+    #[test]
+    fn conversions_saturate() {
+        assert_eq!(I16F16::from_f32(f32::NAN), I16F16::ZERO);
+        assert_eq!(I16F16::from_f32(1e30), I16F16::MAX);
+        assert_eq!(I16F16::from_f32(-1e30), I16F16::MIN);
+        assert_eq!(I16F16::from_ratio(3, 2), I16F16::from_f32(0.75));
+        assert_eq!(f32::from_ratio(-3, 2), -0.75);
+        assert_eq!(I16F16::MIN.abs(), I16F16::MAX);
+        assert_eq!(f32::NAN.clamp_to(0.0, 1.0), 0.0);
+    }
+}

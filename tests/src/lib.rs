@@ -1,0 +1,1 @@
+//! Shared helpers for bandnoise's integration tests and benchmarks.
