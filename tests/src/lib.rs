@@ -1,1 +1,179 @@
-//! Shared helpers for bandnoise's integration tests and benchmarks.
+//! Shared helpers for bandnoise's integration tests and benchmarks: a seeded generator whose seed
+//! can be replayed from the environment, an enum over every lattice noise so a test can loop over
+//! all of them, and small statistics.
+
+use bandnoise::prelude::*;
+
+/// SplitMix64, for test inputs.
+#[derive(Clone, Debug)]
+pub struct Rng(u64);
+
+impl Rng {
+    /// A generator for `default`, or for `BANDNOISE_TEST_SEED` when that is set (to replay a
+    /// failure). Prints the seed so a failing run names it.
+    pub fn from_env(default: u64) -> Self {
+        let seed = std::env::var("BANDNOISE_TEST_SEED")
+            .ok()
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(default);
+        println!("test seed {seed} (replay with BANDNOISE_TEST_SEED={seed})");
+        Rng(seed)
+    }
+
+    /// The next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+
+    /// Uniform in `[lo, hi)`.
+    pub fn f64_in(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * ((self.next_u64() >> 11) as f64 / (1u64 << 53) as f64)
+    }
+
+    /// Uniform integer in `[lo, hi)`.
+    pub fn i32_in(&mut self, lo: i32, hi: i32) -> i32 {
+        (lo as i64 + (self.next_u64() % (hi as i64 - lo as i64) as u64) as i64) as i32
+    }
+
+    /// A coordinate that `I16F16`, `f32` and `f64` all hold exactly: a multiple of 2⁻¹⁶ in
+    /// `(-range, range)` with `range ≤ 256`.
+    pub fn exact_coord(&mut self, range: i32) -> I16F16 {
+        assert!(range <= 256, "beyond 256, f32 cannot hold every multiple of 2^-16");
+        I16F16::from_bits(self.i32_in(-(range << 16) + 1, range << 16))
+    }
+
+    /// A point of exact coordinates.
+    pub fn exact_point<const D: usize>(&mut self, range: i32) -> [I16F16; D] {
+        core::array::from_fn(|_| self.exact_coord(range))
+    }
+}
+
+/// The same point in another number type (exact for points from [`Rng::exact_point`]).
+pub fn to_f32<const D: usize>(p: [I16F16; D]) -> [f32; D] {
+    p.map(|x| x.to_num::<f32>())
+}
+
+/// The same point in f64.
+pub fn to_f64<const D: usize>(p: [I16F16; D]) -> [f64; D] {
+    p.map(|x| x.to_num::<f64>())
+}
+
+/// Every lattice noise of the kernel, so a test can loop over all of them.
+#[derive(Clone, Debug)]
+pub enum Lattice {
+    /// Perlin's improved noise.
+    Perlin(Perlin),
+    /// Perlin's original noise.
+    Original(OriginalPerlin),
+    /// Value noise.
+    Value(ValueNoise),
+    /// Olano's cNoise.
+    C(CNoise),
+    /// Olano's mNoise, the paper's M = 61.
+    M61(MNoise<61>),
+    /// mNoise with the largest modulus exact in f32.
+    M4093(MNoise<4093>),
+}
+
+impl Lattice {
+    /// Every lattice noise for `seed`, with its name.
+    pub fn all(seed: u32) -> Vec<(&'static str, Lattice)> {
+        vec![
+            ("perlin", Lattice::Perlin(Perlin::new(seed))),
+            ("original", Lattice::Original(OriginalPerlin::new(seed))),
+            ("value", Lattice::Value(ValueNoise::new(seed))),
+            ("cnoise", Lattice::C(CNoise::new(seed))),
+            ("mnoise61", Lattice::M61(MNoise::new(seed))),
+            ("mnoise4093", Lattice::M4093(MNoise::new(seed))),
+        ]
+    }
+
+    /// The gradient noises (everything but value noise).
+    pub fn gradient_noises(seed: u32) -> Vec<(&'static str, Lattice)> {
+        Self::all(seed).into_iter().filter(|(_, n)| !matches!(n, Lattice::Value(_))).collect()
+    }
+}
+
+macro_rules! delegate {
+    ($self:ident, $n:ident => $e:expr) => {
+        match $self {
+            Lattice::Perlin($n) => $e,
+            Lattice::Original($n) => $e,
+            Lattice::Value($n) => $e,
+            Lattice::C($n) => $e,
+            Lattice::M61($n) => $e,
+            Lattice::M4093($n) => $e,
+        }
+    };
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for Lattice
+where
+    Perlin: Noise<R, D>,
+    OriginalPerlin: Noise<R, D>,
+    ValueNoise: Noise<R, D>,
+    CNoise: Noise<R, D>,
+    MNoise<61>: Noise<R, D>,
+    MNoise<4093>: Noise<R, D>,
+{
+    fn sample(&self, p: [R; D]) -> R {
+        delegate!(self, n => n.sample(p))
+    }
+    fn amplitude_bound(&self, dims: usize) -> f32 {
+        delegate!(self, n => Noise::<R, D>::amplitude_bound(n, dims))
+    }
+}
+
+impl Lattice {
+    /// Value and analytic gradient, for the gradient noises (`None` for value noise).
+    pub fn sample_with_gradient<R: Real, const D: usize>(&self, p: [R; D]) -> Option<(R, [R; D])>
+    where
+        Perlin: NoiseGradient<R, D>,
+        OriginalPerlin: NoiseGradient<R, D>,
+        CNoise: NoiseGradient<R, D>,
+        MNoise<61>: NoiseGradient<R, D>,
+        MNoise<4093>: NoiseGradient<R, D>,
+    {
+        match self {
+            Lattice::Perlin(n) => Some(n.sample_with_gradient(p)),
+            Lattice::Original(n) => Some(n.sample_with_gradient(p)),
+            Lattice::Value(_) => None,
+            Lattice::C(n) => Some(n.sample_with_gradient(p)),
+            Lattice::M61(n) => Some(n.sample_with_gradient(p)),
+            Lattice::M4093(n) => Some(n.sample_with_gradient(p)),
+        }
+    }
+}
+
+/// Pearson correlation of two equally long samples.
+pub fn correlation(a: &[f64], b: &[f64]) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let n = a.len() as f64;
+    let (ma, mb) = (a.iter().sum::<f64>() / n, b.iter().sum::<f64>() / n);
+    let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
+    for (x, y) in a.iter().zip(b) {
+        sab += (x - ma) * (y - mb);
+        saa += (x - ma) * (x - ma);
+        sbb += (y - mb) * (y - mb);
+    }
+    sab / (saa * sbb).sqrt()
+}
+
+/// Runs `$body` once for every dimension 1..=4 with `const $d: usize` bound to it.
+#[macro_export]
+macro_rules! for_each_dim {
+    ($f:ident ( $($args:expr),* )) => {{
+        $f::<1>($($args),*);
+        $f::<2>($($args),*);
+        $f::<3>($($args),*);
+        $f::<4>($($args),*);
+    }};
+}
+
+/// A noise in `D` dimensions for all three number types (a bound for tests generic over `D`).
+pub trait AllTypes<const D: usize>: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D> {}
+impl<const D: usize, T: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>> AllTypes<D> for T {}

@@ -42,14 +42,16 @@ impl<const M: u32> Bbs<M> {
         x.rem_euclid(M as i32) as u32
     }
 
-    /// One step of the hash for an argument already in `0..2M+1` or so: `(x mod M)² mod M`.
-    /// Kept separate so the noise kernels, whose arguments are small and non-negative, skip the
-    /// signed reduction.
+    /// One step of the hash for an argument in `0..=2M`: `(x mod M)² mod M`.
+    /// The chains only ever add a reduced cell (at most `M` for the upper corner) to a previous
+    /// hash (below `M`), so one conditional subtraction replaces the first division.
     #[inline]
     #[must_use]
     pub(crate) const fn step(x: u32) -> u32 {
         let () = Self::VALID;
-        let r = x % M;
+        debug_assert!(x <= 2 * M);
+        // r may equal M when x = 2M; M² mod M = 0 = (2M mod M)², so the result is still exact.
+        let r = if x >= M { x - M } else { x };
         (r * r) % M
     }
 
@@ -85,15 +87,17 @@ impl<const M: u32> Bbs<M> {
     /// `i mod M` in floating point, Olano's `i − floor(i/M)·M`, for an integer-valued `i`.
     ///
     /// `i/M` is rounded, so `floor` can be off by one next to a multiple of `M`; one correction
-    /// each way makes it exact for `|i| ≤ 2²⁴`, where every product `floor(i/M)·M` is exact.
-    /// Larger integers (all `f32` beyond 2²⁴ are integers) use `fmod`, which is always exact.
-    /// A non-integer `i` is floored first; NaN and ±∞ reduce to 0.
+    /// each way fixes that. The product `floor(i/M)·M` can exceed `|i|` by up to `2M`, so the
+    /// formula is exact while `|i| ≤ 2²⁴ − 8192` (every product stays below 2²⁴). Larger
+    /// magnitudes use `fmod`, which is exact for every float. A non-integer `i` is floored first;
+    /// NaN and ±∞ reduce to 0.
     #[inline]
     #[must_use]
     pub fn reduce_f32(i: f32) -> f32 {
         let () = Self::VALID;
         let m = M as f32;
-        if !(-16_777_216.0..=16_777_216.0).contains(&i) {
+        const FAST: f32 = 16_777_216.0 - 8192.0;
+        if !(-FAST..=FAST).contains(&i) {
             if !i.is_finite() {
                 return 0.0;
             }

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Runs every test of bandnoise, on a fresh machine too: installs the pinned toolchain and targets
+# (rust-toolchain.toml) when missing, then lints, tests, cross-builds and smoke-runs everything.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+step() { printf '\n==> %s\n' "$*"; }
+
+step "toolchain (rust-toolchain.toml)"
+rustup set auto-self-update disable
+rustup toolchain install # installs the pinned channel, components and targets; instant if present
+
+step "format and lints"
+cargo fmt --all -- --check
+cargo clippy --workspace --all-targets -- -D warnings
+
+step "unit, integration and doc tests"
+cargo test --workspace
+
+step "core builds for every target"
+for target in thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf wasm32-unknown-unknown; do
+    cargo build -p bandnoise --release --target "$target"
+done
+
+step "benchmarks compile and run once"
+cargo bench -p bandnoise-tests --bench lattice -- --test
+
+step "gallery renders"
+cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
+test -s target/gallery-smoke/perlin-2d.png
+
+echo
+echo "all bandnoise tests passed"
