@@ -102,6 +102,13 @@ pub trait Real:
     /// floats). Scaling a coordinate by an octave frequency uses it: a wrapped fixed-point
     /// coordinate still lands on a lattice cell, so the result is defined.
     fn wrapping_mul(self, o: Self) -> Self;
+    /// Multiplication rounded to nearest (ties up) in fixed point, plain IEEE `×` for floats.
+    ///
+    /// `fixed`'s `*` rounds toward −∞, a bias of −½ ulp per product that interpolation
+    /// amplifies; the kernels use this instead wherever a product feeds the result. The
+    /// operands' range is proved at each use, and the result saturates rather than wraps if a
+    /// proof were ever wrong.
+    fn mul_rn(self, o: Self) -> Self;
     /// Base-2 logarithm. For `x ≤ 0` (and NaN) it returns the most negative value of the type
     /// (−∞ for floats, `MIN` for fixed point); `+∞` gives `+∞`.
     fn log2(self) -> Self;
@@ -202,6 +209,10 @@ macro_rules! impl_real_float {
                 self * o
             }
             #[inline]
+            fn mul_rn(self, o: Self) -> Self {
+                self * o
+            }
+            #[inline]
             fn log2(self) -> Self {
                 if self > 0.0 {
                     $log2(self)
@@ -297,6 +308,11 @@ impl Real for I16F16 {
     #[inline]
     fn wrapping_mul(self, o: Self) -> Self {
         I16F16::wrapping_mul(self, o)
+    }
+    #[inline]
+    fn mul_rn(self, o: Self) -> Self {
+        let wide = (self.to_bits() as i64 * o.to_bits() as i64 + (1 << 15)) >> 16;
+        I16F16::from_bits(wide.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
     }
     #[inline]
     fn log2(self) -> Self {

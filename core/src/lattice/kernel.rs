@@ -26,7 +26,7 @@ pub(crate) fn split_point<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; 
 /// Perlin's `lerp(t, a, b) = a + t·(b − a)` (this form, not `(1−t)a + tb`, for his exact values).
 #[inline]
 pub(crate) fn lerp<R: Real>(t: R, a: R, b: R) -> R {
-    a + t * (b - a)
+    a + t.mul_rn(b - a)
 }
 
 /// A fade curve applied to each fraction before interpolating.
@@ -44,13 +44,14 @@ impl Fade for Quintic {
     #[inline]
     fn fade<R: Real>(t: R) -> R {
         // Perlin's operation order: t·t·t·(t·(t·6 − 15) + 10).
-        t * t * t * (t * (t * R::from_i32(6) - R::from_i32(15)) + R::from_i32(10))
+        let t3 = t.mul_rn(t).mul_rn(t);
+        t3.mul_rn(t.mul_rn(t.mul_rn(R::from_i32(6)) - R::from_i32(15)) + R::from_i32(10))
     }
     #[inline]
     fn fade_derivative<R: Real>(t: R) -> R {
         // 30 t² (t − 1)²
-        let u = t * (t - R::ONE);
-        u * u * R::from_i32(30)
+        let u = t.mul_rn(t - R::ONE);
+        u.mul_rn(u).mul_rn(R::from_i32(30))
     }
 }
 
@@ -60,12 +61,12 @@ pub(crate) struct Cubic;
 impl Fade for Cubic {
     #[inline]
     fn fade<R: Real>(t: R) -> R {
-        t * t * (R::from_i32(3) - t - t)
+        t.mul_rn(t).mul_rn(R::from_i32(3) - t - t)
     }
     #[inline]
     fn fade_derivative<R: Real>(t: R) -> R {
         // 6 t (1 − t)
-        t * (R::ONE - t) * R::from_i32(6)
+        t.mul_rn(R::ONE - t).mul_rn(R::from_i32(6))
     }
 }
 
@@ -162,7 +163,7 @@ fn interpolate_derivative<R: Real, const D: usize>(
         n >>= 1;
         for j in 0..n {
             v[j] = if a == axis {
-                dt * (v[2 * j + 1] - v[2 * j])
+                dt.mul_rn(v[2 * j + 1] - v[2 * j])
             } else {
                 lerp(*ta, v[2 * j], v[2 * j + 1])
             };

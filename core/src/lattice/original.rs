@@ -134,9 +134,9 @@ where
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
         let g: [R; D] = self.gradient(h);
-        let mut sum = d[0] * g[0];
+        let mut sum = d[0].mul_rn(g[0]);
         for a in 1..D {
-            sum = sum + d[a] * g[a];
+            sum = sum + d[a].mul_rn(g[a]);
         }
         sum
     }
@@ -147,7 +147,7 @@ where
 }
 
 fn sqrt_dims_half(dims: usize) -> f32 {
-    libm::sqrtf(dims as f32) * 0.5
+    libm::sqrtf(dims as f32) * 0.5 + super::ROUNDING
 }
 
 gradient_noise_impls!(OriginalPerlin, [], sqrt_dims_half);

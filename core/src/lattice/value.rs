@@ -14,7 +14,7 @@ use crate::{Noise, Real};
 /// * **Hash**: the seed's [`Permutation`], x innermost, cells mod 256.
 /// * **Lattice values**: `(2h − 255)/256` for the hash `h`, i.e. 256 evenly spaced values in
 ///   `[-255/256, 255/256]` (exact in every number type).
-/// * **Range**: `|n| ≤ 255/256` (a convex blend of lattice values).
+/// * **Range**: `|n| ≤ 255/256` (a convex blend of lattice values), plus 2⁻¹⁰ for rounding.
 ///
 /// # Examples
 ///
@@ -59,6 +59,6 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
     }
 
     fn amplitude_bound(&self, _dims: usize) -> f32 {
-        255.0 / 256.0
+        255.0 / 256.0 + super::ROUNDING
     }
 }
