@@ -24,17 +24,17 @@ use crate::Real;
 /// let perlin = Perlin::new(0);
 /// assert_eq!(perlin.sample([3.14f64, 42.0, 7.0]), 0.13691995878400012); // Perlin's reference
 /// let v: f32 = perlin.sample([0.5, 0.25]);
-/// assert!(v.abs() <= perlin.amplitude_bound(2));
+/// assert!(v.abs() <= Noise::<f32, 2>::amplitude_bound(&perlin));
 /// ```
 pub trait Noise<R: Real, const D: usize> {
     /// The noise at `p`.
     #[must_use]
     fn sample(&self, p: [R; D]) -> R;
 
-    /// An upper bound on `|sample(p)|` over all `p` for this dimension, proved in the docs of
+    /// An upper bound on `|sample(p)|` over all `p` in `D` dimensions, proved in the docs of
     /// each noise (so that fuzzers, tests and normalisations can rely on it).
     #[must_use]
-    fn amplitude_bound(&self, dims: usize) -> f32;
+    fn amplitude_bound(&self) -> f32;
 }
 
 /// A noise that also gives its analytic gradient.
@@ -58,8 +58,8 @@ impl<R: Real, const D: usize, N: Noise<R, D> + ?Sized> Noise<R, D> for &N {
     fn sample(&self, p: [R; D]) -> R {
         (**self).sample(p)
     }
-    fn amplitude_bound(&self, dims: usize) -> f32 {
-        (**self).amplitude_bound(dims)
+    fn amplitude_bound(&self) -> f32 {
+        (**self).amplitude_bound()
     }
 }
 

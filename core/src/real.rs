@@ -176,7 +176,7 @@ macro_rules! impl_real_float {
             fn split(self) -> (i32, Self) {
                 // In range, a truncating cast and one correction give floor() without libm;
                 // `as` is defined (saturating, NaN → 0) on every target.
-                if self >= -2_147_483_648.0 && self < 2_147_483_648.0 {
+                if (-2_147_483_648.0..2_147_483_648.0).contains(&self) {
                     let t = self as i32;
                     let cell = if (t as $t) > self { t - 1 } else { t };
                     // Exact: both are in the same binade or the result is an integer.
@@ -375,7 +375,10 @@ mod tests {
             let got = x.log2().to_f64();
             let want = libm::log2(x.to_f64());
             // Truncated to 16 fraction bits, plus the truncation of each squaring.
-            assert!((got - want).abs() <= 2.0 / 65536.0, "{bits}: {got} vs {want}");
+            assert!(
+                (got - want).abs() <= 2.0 / 65536.0,
+                "{bits}: {got} vs {want}"
+            );
         }
         assert_eq!(I16F16::ZERO.log2(), I16F16::MIN);
         assert_eq!(I16F16::from_i32(-3).log2(), I16F16::MIN);
@@ -390,7 +393,7 @@ mod tests {
         assert_eq!(I16F16::from_f32(-1e30), I16F16::MIN);
         assert_eq!(I16F16::from_ratio(3, 2), I16F16::from_f32(0.75));
         assert_eq!(f32::from_ratio(-3, 2), -0.75);
-        assert_eq!(I16F16::MIN.abs(), I16F16::MAX);
+        assert_eq!(Real::abs(I16F16::MIN), I16F16::MAX);
         assert_eq!(f32::NAN.clamp_to(0.0, 1.0), 0.0);
     }
 }

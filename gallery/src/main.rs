@@ -22,7 +22,12 @@ struct Options {
 }
 
 fn parse_args() -> Result<Options, String> {
-    let mut o = Options { size: 256, scale: 8.0, seed: 0, out: PathBuf::from("gallery-out") };
+    let mut o = Options {
+        size: 256,
+        scale: 8.0,
+        seed: 0,
+        out: PathBuf::from("gallery-out"),
+    };
     let mut args = std::env::args().skip(1);
     while let Some(flag) = args.next() {
         let mut value = || args.next().ok_or_else(|| format!("{flag} needs a value"));
@@ -42,7 +47,9 @@ fn parse_args() -> Result<Options, String> {
             "--seed" => o.seed = value()?.parse().map_err(|e| format!("--seed: {e}"))?,
             "--out" => o.out = PathBuf::from(value()?),
             "-h" | "--help" => {
-                return Err("usage: bandnoise-gallery [--size N] [--scale S] [--seed K] [--out DIR]".into());
+                return Err(
+                    "usage: bandnoise-gallery [--size N] [--scale S] [--seed K] [--out DIR]".into(),
+                );
             }
             other => return Err(format!("unknown argument {other}")),
         }
@@ -53,7 +60,7 @@ fn parse_args() -> Result<Options, String> {
 /// Samples `noise` over the grid and writes it as an 8-bit grey PNG.
 fn render<R: Real, N: Noise<R, 2>>(o: &Options, name: &str, noise: &N) -> Result<(), String> {
     let n = o.size as usize;
-    let bound = noise.amplitude_bound(2);
+    let bound = noise.amplitude_bound();
     let step = o.scale / o.size as f32;
     let mut pixels = Vec::with_capacity(n * n);
     for j in 0..n {
@@ -89,8 +96,16 @@ fn run(o: &Options) -> Result<(), String> {
     render::<I16F16, _>(o, "perlin-2d-fixed", &Perlin::new(s))?;
     let octaves = Octaves::default();
     render::<f32, _>(o, "perlin-fbm-2d", &Fractal::fbm(Perlin::new(s), octaves))?;
-    render::<f32, _>(o, "perlin-turbulence-2d", &Fractal::turbulence(Perlin::new(s), octaves))?;
-    render::<f32, _>(o, "perlin-ridged-2d", &Fractal::ridged(Perlin::new(s), octaves))?;
+    render::<f32, _>(
+        o,
+        "perlin-turbulence-2d",
+        &Fractal::turbulence(Perlin::new(s), octaves),
+    )?;
+    render::<f32, _>(
+        o,
+        "perlin-ridged-2d",
+        &Fractal::ridged(Perlin::new(s), octaves),
+    )?;
     Ok(())
 }
 

@@ -50,13 +50,21 @@ fn lattice(c: &mut Criterion) {
     let perlin = Perlin::new(0);
     let mnoise = MNoise::<61>::new(0);
     g.bench_function("perlin-2d-f32", |b| b.iter(|| grid2::<f32, _>(&perlin)));
-    g.bench_function("perlin-2d-i16f16", |b| b.iter(|| grid2::<I16F16, _>(&perlin)));
+    g.bench_function("perlin-2d-i16f16", |b| {
+        b.iter(|| grid2::<I16F16, _>(&perlin))
+    });
     g.bench_function("perlin-3d-f32", |b| b.iter(|| grid3::<f32, _>(&perlin)));
-    g.bench_function("perlin-3d-i16f16", |b| b.iter(|| grid3::<I16F16, _>(&perlin)));
+    g.bench_function("perlin-3d-i16f16", |b| {
+        b.iter(|| grid3::<I16F16, _>(&perlin))
+    });
     g.bench_function("mnoise-2d-f32", |b| b.iter(|| grid2::<f32, _>(&mnoise)));
-    g.bench_function("mnoise-2d-i16f16", |b| b.iter(|| grid2::<I16F16, _>(&mnoise)));
+    g.bench_function("mnoise-2d-i16f16", |b| {
+        b.iter(|| grid2::<I16F16, _>(&mnoise))
+    });
     g.bench_function("mnoise-3d-f32", |b| b.iter(|| grid3::<f32, _>(&mnoise)));
-    g.bench_function("mnoise-3d-i16f16", |b| b.iter(|| grid3::<I16F16, _>(&mnoise)));
+    g.bench_function("mnoise-3d-i16f16", |b| {
+        b.iter(|| grid3::<I16F16, _>(&mnoise))
+    });
     g.finish();
 }
 

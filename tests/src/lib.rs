@@ -42,7 +42,10 @@ impl Rng {
     /// A coordinate that `I16F16`, `f32` and `f64` all hold exactly: a multiple of 2⁻¹⁶ in
     /// `(-range, range)` with `range ≤ 256`.
     pub fn exact_coord(&mut self, range: i32) -> I16F16 {
-        assert!(range <= 256, "beyond 256, f32 cannot hold every multiple of 2^-16");
+        assert!(
+            range <= 256,
+            "beyond 256, f32 cannot hold every multiple of 2^-16"
+        );
         I16F16::from_bits(self.i32_in(-(range << 16) + 1, range << 16))
     }
 
@@ -94,7 +97,10 @@ impl Lattice {
 
     /// The gradient noises (everything but value noise).
     pub fn gradient_noises(seed: u32) -> Vec<(&'static str, Lattice)> {
-        Self::all(seed).into_iter().filter(|(_, n)| !matches!(n, Lattice::Value(_))).collect()
+        Self::all(seed)
+            .into_iter()
+            .filter(|(_, n)| !matches!(n, Lattice::Value(_)))
+            .collect()
     }
 }
 
@@ -123,8 +129,8 @@ where
     fn sample(&self, p: [R; D]) -> R {
         delegate!(self, n => n.sample(p))
     }
-    fn amplitude_bound(&self, dims: usize) -> f32 {
-        delegate!(self, n => Noise::<R, D>::amplitude_bound(n, dims))
+    fn amplitude_bound(&self) -> f32 {
+        delegate!(self, n => Noise::<R, D>::amplitude_bound(n))
     }
 }
 

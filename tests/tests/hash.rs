@@ -20,13 +20,20 @@ fn exhaustive<const M: u32>() {
         let float = Bbs::<M>::hash_f32(i as f32);
         if int != want || float != want as f32 {
             mismatches += 1;
-            assert!(mismatches < 10, "M={M} i={i}: int {int} f32 {float} want {want}");
+            assert!(
+                mismatches < 10,
+                "M={M} i={i}: int {int} f32 {float} want {want}"
+            );
         }
     }
     assert_eq!(mismatches, 0);
     // Every i32 edge, and f32 integers beyond 2^24 (sparse, all exact).
     for i in [i32::MIN, i32::MIN + 1, -1, 0, 1, i32::MAX - 1, i32::MAX] {
-        assert_eq!(Bbs::<M>::hash(i) as i64, reference(i as i64, m), "M={M} i={i}");
+        assert_eq!(
+            Bbs::<M>::hash(i) as i64,
+            reference(i as i64, m),
+            "M={M} i={i}"
+        );
     }
     let mut rng = Rng::from_env(61);
     for _ in 0..1_000_000 {
@@ -69,13 +76,23 @@ fn bbs_small_modulus_and_reduction() {
     fn exhaustive_small<const M: u32>() {
         for i in -100_000..100_000 {
             assert_eq!(Bbs::<M>::hash(i) as i64, reference(i as i64, M as i64));
-            assert_eq!(Bbs::<M>::hash_f32(i as f32), reference(i as i64, M as i64) as f32);
+            assert_eq!(
+                Bbs::<M>::hash_f32(i as f32),
+                reference(i as i64, M as i64) as f32
+            );
         }
     }
-    // Olano's figure: the largest intermediate value for M = 61 is 60² = 3600.
-    assert_eq!((0..61).map(|r| r * r).max(), Some(3600));
     // 4093 is the largest prime whose square is exact in f32 (below 2^24).
-    assert!(4093u64 * 4093 < 1 << 24 && 4099u64 * 4099 > 1 << 24);
+    let is_prime = |n: u64| {
+        n > 1
+            && (2..)
+                .take_while(|d| d * d <= n)
+                .all(|d| !n.is_multiple_of(d))
+    };
+    let largest = (2u64..1 << 12)
+        .rev()
+        .find(|&p| is_prime(p) && p * p < 1 << 24);
+    assert_eq!(largest, Some(4093));
 }
 
 #[test]

@@ -11,7 +11,7 @@ fn max_abs<const D: usize>(noise: &Lattice, name: &str, rng: &mut Rng)
 where
     Lattice: AllTypes<D>,
 {
-    let bound = Noise::<f32, D>::amplitude_bound(noise, D);
+    let bound = Noise::<f32, D>::amplitude_bound(noise);
     let (mut m32, mut m64, mut mfx) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..RANGE_POINTS {
         let p: [f64; D] = core::array::from_fn(|_| rng.f64_in(-1000.0, 1000.0));
@@ -26,7 +26,10 @@ where
     }
     println!("{name:>10} {D}D: max |n| f64 {m64:.4}, f32 {m32:.4}, I16F16 {mfx:.4}; bound {bound}");
     for (ty, m) in [("f64", m64), ("f32", m32), ("I16F16", mfx)] {
-        assert!(m <= bound as f64, "{name} {D}D {ty}: {m} exceeds the documented bound {bound}");
+        assert!(
+            m <= bound as f64,
+            "{name} {D}D {ty}: {m} exceeds the documented bound {bound}"
+        );
     }
 }
 
@@ -52,7 +55,10 @@ where
         let fl: f32 = noise.sample(to_f32(p));
         worst = worst.max((fx.to_num::<f64>() - fl as f64).abs());
     }
-    println!("{name:>10} {D}D: max |I16F16 − f32| = {worst:.3e} ({:.2} × 2⁻¹⁶)", worst * 65536.0);
+    println!(
+        "{name:>10} {D}D: max |I16F16 − f32| = {worst:.3e} ({:.2} × 2⁻¹⁶)",
+        worst * 65536.0
+    );
     worst
 }
 

@@ -5,6 +5,10 @@ use bandnoise::prelude::*;
 use bandnoise_tests::{AllTypes, Lattice, Rng, for_each_dim, to_f32, to_f64};
 
 #[test]
+#[allow(
+    clippy::approx_constant,
+    reason = "Perlin's reference input is 3.14, not π"
+)]
 fn perlin_reference_value() {
     let p = Perlin::new(0);
     // Ken Perlin's reference implementation of improved noise gives this for (3.14, 42, 7).
@@ -24,8 +28,11 @@ fn perlin_reference_value() {
     assert!((f32v as f64 - at_rounded_input).abs() <= 8.0 * f32::EPSILON as f64);
     assert!((f32v as f64 - want).abs() <= 1e-6);
 
-    let fixed: I16F16 =
-        p.sample([I16F16::from_num(3.14), I16F16::from_num(42), I16F16::from_num(7)]);
+    let fixed: I16F16 = p.sample([
+        I16F16::from_num(3.14),
+        I16F16::from_num(42),
+        I16F16::from_num(7),
+    ]);
     assert!((fixed.to_num::<f64>() - want).abs() <= 1.0 / 2048.0);
 }
 
@@ -97,9 +104,17 @@ where
         let (lo, hi): (I16F16, I16F16) = (noise.sample(p), noise.sample(q));
         assert_eq!(lo, hi, "{name} fixed {E}D → {D}D at {p:?}");
         let (lo, hi): (f32, f32) = (noise.sample(to_f32(p)), noise.sample(to_f32(q)));
-        assert_eq!(lo.to_bits(), hi.to_bits(), "{name} f32 {E}D → {D}D at {p:?}");
+        assert_eq!(
+            lo.to_bits(),
+            hi.to_bits(),
+            "{name} f32 {E}D → {D}D at {p:?}"
+        );
         let (lo, hi): (f64, f64) = (noise.sample(to_f64(p)), noise.sample(to_f64(q)));
-        assert_eq!(lo.to_bits(), hi.to_bits(), "{name} f64 {E}D → {D}D at {p:?}");
+        assert_eq!(
+            lo.to_bits(),
+            hi.to_bits(),
+            "{name} f64 {E}D → {D}D at {p:?}"
+        );
     }
 }
 

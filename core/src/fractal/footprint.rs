@@ -37,9 +37,15 @@ pub(crate) fn octaves_for<R: Real>(len2: R, max: u32) -> Clamp<R> {
     let (full, frac) = n.split();
     let full = full.clamp(0, max as i32) as u32;
     if full >= max {
-        return Clamp { full: max, partial: R::ZERO };
+        return Clamp {
+            full: max,
+            partial: R::ZERO,
+        };
     }
-    Clamp { full, partial: smoothstep(R::from_f32(0.3), R::from_f32(0.7), frac) }
+    Clamp {
+        full,
+        partial: smoothstep(R::from_f32(0.3), R::from_f32(0.7), frac),
+    }
 }
 
 /// pbrt's `SmoothStep(lo, hi, x)`: 0 below `lo`, 1 above `hi`, `v²(3 − 2v)` between.
@@ -63,15 +69,33 @@ mod tests {
     fn octave_counts() {
         // Footprint 1/2^k: n = -1 + k octaves.
         let c = octaves_for(1.0f32 / 4096.0 / 4096.0, 8); // k = 12 → n = 11, clamped to 8
-        assert_eq!(c, Clamp { full: 8, partial: 0.0 });
+        assert_eq!(
+            c,
+            Clamp {
+                full: 8,
+                partial: 0.0
+            }
+        );
         let c = octaves_for(1.0f32 / 64.0 / 64.0, 8); // k = 6 → n = 5 exactly
-        assert_eq!(c, Clamp { full: 5, partial: 0.0 });
+        assert_eq!(
+            c,
+            Clamp {
+                full: 5,
+                partial: 0.0
+            }
+        );
         let c = octaves_for(0.0f32, 8);
         assert_eq!(c.full, 8);
         let c = octaves_for(f32::NAN, 8);
         assert_eq!(c.full, 8);
         let c = octaves_for(f32::INFINITY, 8);
-        assert_eq!(c, Clamp { full: 0, partial: 0.0 });
+        assert_eq!(
+            c,
+            Clamp {
+                full: 0,
+                partial: 0.0
+            }
+        );
         // n = 2.5: two full octaves, the third half faded in.
         let len2 = libm::exp2f(-7.0);
         let c = octaves_for(len2, 8);

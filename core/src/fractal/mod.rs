@@ -47,7 +47,10 @@ impl<R: Real> Octaves<R> {
     /// ```
     pub fn new(count: u32, lacunarity: f32, gain: f32) -> Result<Self, Error> {
         if count == 0 || count > Self::MAX {
-            return Err(Error::OctaveCount { count, max: Self::MAX });
+            return Err(Error::OctaveCount {
+                count,
+                max: Self::MAX,
+            });
         }
         if !(lacunarity > 0.0 && lacunarity <= 16.0) {
             return Err(Error::Lacunarity(lacunarity));
@@ -55,7 +58,11 @@ impl<R: Real> Octaves<R> {
         if !(-1.0..=1.0).contains(&gain) {
             return Err(Error::Gain(gain));
         }
-        Ok(Self { count, lacunarity: R::from_f32(lacunarity), gain: R::from_f32(gain) })
+        Ok(Self {
+            count,
+            lacunarity: R::from_f32(lacunarity),
+            gain: R::from_f32(gain),
+        })
     }
 
     /// The number of octaves.
@@ -79,7 +86,11 @@ impl<R: Real> Octaves<R> {
 
 impl<R: Real> Default for Octaves<R> {
     fn default() -> Self {
-        Self { count: 6, lacunarity: R::from_f32(1.99), gain: R::from_ratio(1, 1) }
+        Self {
+            count: 6,
+            lacunarity: R::from_f32(1.99),
+            gain: R::from_ratio(1, 1),
+        }
     }
 }
 
@@ -104,7 +115,7 @@ pub enum Kind {
 ///
 /// let fbm = Fractal::fbm(Perlin::new(0), Octaves::default());
 /// let v: f32 = fbm.sample([0.3, 0.7, 0.1]);
-/// assert!(v.abs() <= fbm.amplitude_bound(3));
+/// assert!(v.abs() <= Noise::<f32, 3>::amplitude_bound(&fbm));
 ///
 /// // pbrt's anti-aliased form: a footprint of 1/16 keeps n = −1 + 4 = 3 octaves.
 /// let far: f32 = fbm.sample_filtered([0.3, 0.7, 0.1], [0.0625, 0.0, 0.0], [0.0, 0.0625, 0.0]);
@@ -122,7 +133,12 @@ pub struct Fractal<N, R> {
 impl<N, R: Real> Fractal<N, R> {
     /// A fractal sum of `kind`.
     pub fn new(noise: N, octaves: Octaves<R>, kind: Kind) -> Self {
-        Self { noise, octaves, kind, clamped_mean: R::from_f32(0.2) }
+        Self {
+            noise,
+            octaves,
+            kind,
+            clamped_mean: R::from_f32(0.2),
+        }
     }
 
     /// Fractional Brownian motion.
@@ -180,7 +196,11 @@ impl<N, R: Real> Fractal<N, R> {
         let mut frequency = R::ONE;
         let mut amplitude = R::ONE;
         let mut weight = R::ONE;
-        let last = if full < self.octaves.count { full + 1 } else { full };
+        let last = if full < self.octaves.count {
+            full + 1
+        } else {
+            full
+        };
         for i in 0..last {
             // Wrapping in fixed point keeps the coordinate on the lattice; see Real::wrapping_mul.
             let n = self.noise.sample(p.map(|x| x.wrapping_mul(frequency)));
@@ -247,8 +267,8 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N, R> {
 
     /// `Σ_i |gain|^i · B`, with `B` the noise's bound for fBm and turbulence and
     /// `max(1, (B − 1)²)` for ridged terms.
-    fn amplitude_bound(&self, dims: usize) -> f32 {
-        let b = self.noise.amplitude_bound(dims);
+    fn amplitude_bound(&self) -> f32 {
+        let b = self.noise.amplitude_bound();
         let term = match self.kind {
             Kind::Fbm | Kind::Turbulence => b,
             Kind::Ridged => (b - 1.0) * (b - 1.0),

@@ -22,7 +22,9 @@
 ///
 /// assert_eq!(Bbs::<61>::hash(10), 100 % 61);
 /// assert_eq!(Bbs::<61>::hash(-1), 1); // reduced first: -1 ≡ 60, 60² = 3600 ≡ 1
-/// assert_eq!(Bbs::<61>::hash3(1, 2, 3), Bbs::<61>::hash(1 + Bbs::<61>::hash(2 + Bbs::<61>::hash(3)) as i32));
+/// type H = Bbs<61>;
+/// let chained = H::hash(1 + H::hash(2 + H::hash(3) as i32) as i32);
+/// assert_eq!(H::hash3(1, 2, 3), chained);
 /// assert_eq!(Bbs::<4093>::hash_f32(-12345.0), Bbs::<4093>::hash(-12345) as f32);
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -89,7 +89,11 @@ impl<const M: u32> MNoise<M> {
             inner[a - 1] = h;
             a -= 1;
         }
-        Self { offset, flip, inner }
+        Self {
+            offset,
+            flip,
+            inner,
+        }
     }
 
     /// The period on every axis.

@@ -88,11 +88,11 @@ pub(crate) fn hash_corners_x_first<const D: usize>(
 ) -> [u32; MAX_CORNERS] {
     let mut h = [0u32; MAX_CORNERS];
     h[0] = start;
-    for a in 0..D {
+    for (a, &c) in cells.iter().enumerate() {
         let bit = 1 << a;
         for m in 0..bit {
-            h[m | bit] = step(h[m], cells[a] + 1);
-            h[m] = step(h[m], cells[a]);
+            h[m | bit] = step(h[m], c + 1);
+            h[m] = step(h[m], c);
         }
     }
     h

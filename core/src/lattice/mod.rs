@@ -103,8 +103,8 @@ macro_rules! gradient_noise_impls {
             fn sample(&self, p: [R; D]) -> R {
                 crate::lattice::sample_gradient(self, p)
             }
-            fn amplitude_bound(&self, dims: usize) -> f32 {
-                $bound(dims)
+            fn amplitude_bound(&self) -> f32 {
+                $bound(D)
             }
         }
 

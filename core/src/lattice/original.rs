@@ -86,7 +86,9 @@ impl OriginalPerlin {
     /// Original noise for `seed`.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        Self { perm: Permutation::new(seed) }
+        Self {
+            perm: Permutation::new(seed),
+        }
     }
 }
 

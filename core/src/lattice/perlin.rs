@@ -43,7 +43,9 @@ impl Perlin {
     /// `static NOISE: Perlin = Perlin::new(7);` builds the table at compile time.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        Self { perm: Permutation::new(seed) }
+        Self {
+            perm: Permutation::new(seed),
+        }
     }
 
     #[inline]

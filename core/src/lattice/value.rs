@@ -5,7 +5,9 @@
 //! and visible grid structure (Lewis 1989 §2; Olano 2005 §2). It is here as the baseline the
 //! better noises are compared against.
 
-use super::kernel::{MAX_CORNERS, Quintic, fade_all, hash_corners_x_first, interpolate, split_point};
+use super::kernel::{
+    MAX_CORNERS, Quintic, fade_all, hash_corners_x_first, interpolate, split_point,
+};
 use crate::hash::Permutation;
 use crate::{Noise, Real};
 
@@ -35,7 +37,9 @@ impl ValueNoise {
     /// Value noise for `seed`.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        Self { perm: Permutation::new(seed) }
+        Self {
+            perm: Permutation::new(seed),
+        }
     }
 }
 
@@ -58,7 +62,7 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
         interpolate(v, &fade_all::<Quintic, R, D>(f)).canonical()
     }
 
-    fn amplitude_bound(&self, _dims: usize) -> f32 {
+    fn amplitude_bound(&self) -> f32 {
         255.0 / 256.0 + super::ROUNDING
     }
 }
