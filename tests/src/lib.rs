@@ -183,3 +183,7 @@ macro_rules! for_each_dim {
 /// A noise in `D` dimensions for all three number types (a bound for tests generic over `D`).
 pub trait AllTypes<const D: usize>: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D> {}
 impl<const D: usize, T: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>> AllTypes<D> for T {}
+
+/// The README's example, compiled and run as a doctest so it stays true.
+#[doc = include_str!("../../README.md")]
+mod readme {}
