@@ -17,6 +17,9 @@ cargo clippy --workspace --all-targets -- -D warnings
 step "unit, integration and doc tests"
 cargo test --workspace
 
+step "API docs build without warnings (broken links, missing docs)"
+RUSTDOCFLAGS="-D warnings" cargo doc -p bandnoise --no-deps
+
 step "core builds for every target"
 for target in thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf wasm32-unknown-unknown; do
     cargo build -p bandnoise --release --target "$target"

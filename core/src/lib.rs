@@ -32,6 +32,17 @@
 //! let _: f32 = fbm.sample([0.1, 0.2, 0.3]);
 //! ```
 //!
+//! # Seeds
+//!
+//! Every noise takes a `u32` seed in `new`, and every `new` is `const`. How the seed enters:
+//!
+//! | noise | the seed … | seed 0 |
+//! |---|---|---|
+//! | [`Perlin`](lattice::Perlin), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
+//! | [`MNoise`](lattice::MNoise) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
+//!
+//! Different seeds give decorrelated noise (tested: |correlation| < 0.05 on a 256² grid).
+//!
 //! # Guarantees
 //!
 //! * `#![no_std]`, no allocation, no `unsafe`.

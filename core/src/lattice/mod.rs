@@ -10,7 +10,7 @@
 //! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
 //!
 //! Every type implements [`Noise`](crate::Noise) for 1 to 4 dimensions and every
-//! [`Real`](crate::Real); the gradient noises also implement
+//! [`Real`]; the gradient noises also implement
 //! [`NoiseGradient`](crate::NoiseGradient).
 //!
 //! # Output bounds
