@@ -19,6 +19,22 @@ pub enum Error {
     Gain(f32),
     /// A clamped-octave mean that is not finite or not in `[0, 4]`.
     ClampedMean(f32),
+    /// More wavelet bands than a band list holds.
+    TooManyBands {
+        /// The number of bands asked for.
+        count: usize,
+        /// The most a band list holds.
+        max: usize,
+    },
+    /// A band weight that is not finite or exceeds 10⁶ in magnitude.
+    BandWeight {
+        /// The band's position in the list.
+        index: usize,
+        /// The weight given.
+        value: f32,
+    },
+    /// A first band outside `-24..=8` (frequencies from 2⁻²⁴ to 2⁸ cycles per unit).
+    FirstBand(i32),
 }
 
 impl fmt::Display for Error {
@@ -32,6 +48,16 @@ impl fmt::Display for Error {
             Error::ClampedMean(v) => {
                 write!(f, "clamped-octave mean {v} must be finite and in [0, 4]")
             }
+            Error::TooManyBands { count, max } => {
+                write!(f, "{count} wavelet bands given, at most {max} are allowed")
+            }
+            Error::BandWeight { index, value } => {
+                write!(
+                    f,
+                    "band weight {value} at {index} must be finite and at most 1e6 in magnitude"
+                )
+            }
+            Error::FirstBand(b) => write!(f, "first band {b} is outside -24..=8"),
         }
     }
 }

@@ -61,6 +61,7 @@ pub mod hash;
 pub mod lattice;
 mod noise;
 mod real;
+pub mod wavelet;
 
 pub use error::Error;
 pub use noise::{Noise, NoiseGradient};

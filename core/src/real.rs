@@ -109,6 +109,12 @@ pub trait Real:
     /// operands' range is proved at each use, and the result saturates rather than wraps if a
     /// proof were ever wrong.
     fn mul_rn(self, o: Self) -> Self;
+    /// Square root; negative inputs (and NaN) give 0. Floats use `libm` (correctly rounded, so
+    /// identical everywhere); fixed point an integer square root, truncated.
+    fn sqrt(self) -> Self;
+    /// Division. Floats: IEEE `/`. Fixed point saturates, and a zero divisor gives `MAX` or
+    /// `MIN` with the dividend's sign (0 for 0/0): callers guard against zero divisors anyway.
+    fn div(self, o: Self) -> Self;
     /// Base-2 logarithm. For `x ≤ 0` (and NaN) it returns the most negative value of the type
     /// (−∞ for floats, `MIN` for fixed point); `+∞` gives `+∞`.
     fn log2(self) -> Self;
@@ -144,7 +150,7 @@ fn split_far(x: f64) -> (i32, f64) {
 }
 
 macro_rules! impl_real_float {
-    ($t:ty, $log2:path) => {
+    ($t:ty, $log2:path, $sqrt:path) => {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
@@ -213,6 +219,14 @@ macro_rules! impl_real_float {
                 self * o
             }
             #[inline]
+            fn sqrt(self) -> Self {
+                if self > 0.0 { $sqrt(self) } else { 0.0 }
+            }
+            #[inline]
+            fn div(self, o: Self) -> Self {
+                self / o
+            }
+            #[inline]
             fn log2(self) -> Self {
                 if self > 0.0 {
                     $log2(self)
@@ -232,8 +246,8 @@ macro_rules! impl_real_float {
     };
 }
 
-impl_real_float!(f32, libm::log2f);
-impl_real_float!(f64, libm::log2);
+impl_real_float!(f32, libm::log2f, libm::sqrtf);
+impl_real_float!(f64, libm::log2, libm::sqrt);
 
 /// Base-2 logarithm of a positive I16F16 given by its raw bits, by the exact bit-by-bit
 /// method (repeated squaring of the mantissa), so it needs no floating point at all.
@@ -252,6 +266,25 @@ fn log2_fixed_bits(bits: i32) -> i32 {
         }
     }
     (int_part << 16) | frac
+}
+
+/// `floor(sqrt(v))` by the digit-by-digit method: integers only, 24 steps for 48 bits.
+fn isqrt(v: u64) -> u64 {
+    let (mut rem, mut root) = (v, 0u64);
+    let mut bit = 1u64 << 62;
+    while bit > v {
+        bit >>= 2;
+    }
+    while bit != 0 {
+        if rem >= root + bit {
+            rem -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    root
 }
 
 impl Real for I16F16 {
@@ -313,6 +346,26 @@ impl Real for I16F16 {
     fn mul_rn(self, o: Self) -> Self {
         let wide = (self.to_bits() as i64 * o.to_bits() as i64 + (1 << 15)) >> 16;
         I16F16::from_bits(wide.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        let bits = self.to_bits();
+        if bits <= 0 {
+            return I16F16::ZERO;
+        }
+        // sqrt(b / 2^16) = sqrt(b · 2^16) / 2^16: integer square root of a 48-bit number.
+        I16F16::from_bits(isqrt((bits as u64) << 16) as i32)
+    }
+    #[inline]
+    fn div(self, o: Self) -> Self {
+        if o == I16F16::ZERO {
+            return match self.to_bits() {
+                0 => I16F16::ZERO,
+                b if b > 0 => I16F16::MAX,
+                _ => I16F16::MIN,
+            };
+        }
+        self.saturating_div(o)
     }
     #[inline]
     fn log2(self) -> Self {
@@ -384,6 +437,23 @@ mod tests {
         assert_eq!(I16F16::from_i32(-3).log2(), I16F16::MIN);
         assert_eq!(I16F16::ONE.log2(), I16F16::ZERO);
         assert_eq!(I16F16::from_i32(1024).log2(), I16F16::from_i32(10));
+    }
+
+    #[test]
+    fn fixed_sqrt_and_div() {
+        for bits in (0..i32::MAX).step_by(104_729) {
+            let x = I16F16::from_bits(bits);
+            let r = Real::sqrt(x).to_bits() as u64;
+            let v = (bits as u64) << 16;
+            assert!(r * r <= v && (r + 1) * (r + 1) > v, "{bits}");
+        }
+        assert_eq!(Real::sqrt(I16F16::from_i32(-4)), I16F16::ZERO);
+        assert_eq!(Real::sqrt(I16F16::from_i32(9)), I16F16::from_i32(3));
+        assert_eq!(Real::div(I16F16::ONE, I16F16::ZERO), I16F16::MAX);
+        assert_eq!(Real::div(-I16F16::ONE, I16F16::ZERO), I16F16::MIN);
+        assert_eq!(Real::div(I16F16::ZERO, I16F16::ZERO), I16F16::ZERO);
+        assert_eq!(Real::div(I16F16::MAX, I16F16::DELTA), I16F16::MAX);
+        assert_eq!(Real::sqrt(-1.0f32), 0.0);
     }
 
     #[test]

@@ -187,3 +187,48 @@ impl<const D: usize, T: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>> AllTyp
 /// The README's example, compiled and run as a doctest so it stays true.
 #[doc = include_str!("../../README.md")]
 mod readme {}
+
+/// Radially binned power of a square grid of samples (side a power of two), `spacing` units
+/// apart: returns `(fraction of the power below `cutoff` cycles per unit, total power)`, the mean
+/// (DC bin) excluded.
+pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f64) -> f64 {
+    use rustfft::{FftPlanner, num_complex::Complex};
+    assert_eq!(grid.len(), side * side);
+    let fft = FftPlanner::<f64>::new().plan_fft_forward(side);
+    let mut data: Vec<Complex<f64>> = grid.iter().map(|&v| Complex::new(v, 0.0)).collect();
+    for row in data.chunks_mut(side) {
+        fft.process(row);
+    }
+    let mut column = vec![Complex::new(0.0, 0.0); side];
+    for x in 0..side {
+        for y in 0..side {
+            column[y] = data[y * side + x];
+        }
+        fft.process(&mut column);
+        for y in 0..side {
+            data[y * side + x] = column[y];
+        }
+    }
+    let freq = |k: usize| {
+        let k = if k > side / 2 {
+            k as f64 - side as f64
+        } else {
+            k as f64
+        };
+        k / (side as f64 * spacing)
+    };
+    let (mut low, mut total) = (0.0, 0.0);
+    for y in 0..side {
+        for x in 0..side {
+            if x == 0 && y == 0 {
+                continue;
+            }
+            let power = data[y * side + x].norm_sqr();
+            total += power;
+            if freq(x).hypot(freq(y)) < cutoff {
+                low += power;
+            }
+        }
+    }
+    low / total
+}

@@ -1,0 +1,274 @@
+//! Evaluation of one noise band (Cook & DeRose 2005, §3.6 and Appendix 2, with erratum 6), and
+//! tile repetition with hashed orientations (§4.3).
+//!
+//! `N(p) = Σ_c n_c B(p − c)`: the quadratic B-spline through the tile's coefficients, 3 per axis
+//! (3ᵈ in all). Coefficient `c` sits at integer position `c` of the coefficient grid.
+//!
+//! **Seams.** With [`Tiling::Varied`], each tile-sized block of the coefficient grid reads the
+//! tile in one of its 48 orientations (6 axis permutations × 8 reflections; 8 in 2D), chosen by
+//! a hash of the block coordinate and the seed. A coefficient's value depends only on its global
+//! index, so `N` stays a quadratic B-spline of one coefficient grid: continuous with a continuous
+//! gradient across block borders, with no blending and hence none of the variance loss that
+//! §4.3's overlap blending must correct. What a border costs is band-limitedness: the two blocks'
+//! coefficients are unrelated there. The spectrum test (`tests/tests/wavelet.rs`) measures that
+//! leak and finds it small (the figures are printed there).
+
+use crate::{Noise, Real};
+
+use super::tile::{Tile2, Tile3};
+
+/// Coefficient storage a wavelet noise reads: the `f32` tiles and the quantized tiles.
+pub trait TileData<const D: usize> {
+    /// The side of the tile.
+    const SIZE: usize;
+    /// The coefficient at an in-range index (each component below `SIZE`; index 0 is x).
+    fn get<R: Real>(&self, index: [usize; D]) -> R;
+    /// The largest `|coefficient|`.
+    fn max_abs(&self) -> f32;
+}
+
+impl<const N: usize> TileData<2> for Tile2<N> {
+    const SIZE: usize = N;
+    #[inline]
+    fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
+        R::from_f32(self.data[y][x])
+    }
+    fn max_abs(&self) -> f32 {
+        self.max_abs
+    }
+}
+
+impl<const N: usize> TileData<3> for Tile3<N> {
+    const SIZE: usize = N;
+    #[inline]
+    fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
+        R::from_f32(self.data[z][y][x])
+    }
+    fn max_abs(&self) -> f32 {
+        self.max_abs
+    }
+}
+
+/// How the tile repeats over space.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Tiling {
+    /// The tile repeats unchanged: the noise is periodic with the tile's size in coefficients.
+    Periodic,
+    /// Each tile-sized block uses one of the tile's 48 orientations (8 in 2D), chosen by a hash
+    /// of the block and the seed (§4.3): no visible repetition, and still continuous.
+    #[default]
+    Varied,
+}
+
+/// One band of wavelet noise over a tile `T`, in 2D or 3D (the tile's dimension).
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Noise, wavelet::{Tile3, Wavelet}};
+///
+/// static TILE: Tile3<16> = Tile3::generate(1);
+/// let band = Wavelet::new(&TILE, 42);
+/// let v: f32 = band.sample([0.5, 1.25, -3.0]);
+/// assert!(v.is_finite());
+/// ```
+#[derive(Debug)]
+pub struct Wavelet<'t, T> {
+    tile: &'t T,
+    seed: u32,
+    tiling: Tiling,
+}
+
+// By hand: derived impls would demand `T: Clone`, but only a reference is copied.
+impl<T> Clone for Wavelet<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T> Copy for Wavelet<'_, T> {}
+
+impl<'t, T> Wavelet<'t, T> {
+    /// A band over `tile`, with hashed orientations ([`Tiling::Varied`]) chosen by `seed`.
+    #[must_use]
+    pub const fn new(tile: &'t T, seed: u32) -> Self {
+        Self {
+            tile,
+            seed,
+            tiling: Tiling::Varied,
+        }
+    }
+
+    /// The same band with another tiling.
+    #[must_use]
+    pub const fn with_tiling(mut self, tiling: Tiling) -> Self {
+        self.tiling = tiling;
+        self
+    }
+
+    /// The tile.
+    #[must_use]
+    pub const fn tile(&self) -> &'t T {
+        self.tile
+    }
+
+    /// The tiling.
+    #[must_use]
+    pub const fn tiling(&self) -> Tiling {
+        self.tiling
+    }
+
+    /// The seed.
+    #[must_use]
+    pub const fn seed(&self) -> u32 {
+        self.seed
+    }
+}
+
+/// Quadratic B-spline weights along one axis: the first of the three coefficients and their
+/// weights `((1−f)²/2, 1 − …, f²/2)`, with `f` the fraction of `x − ½` (Appendix 2).
+#[inline]
+pub(crate) fn bspline3<R: Real>(x: R) -> (i32, [R; 3]) {
+    let half = R::from_ratio(1, 1);
+    let (cell, frac) = x.split();
+    // x − ½ without computing it (it could overflow fixed point at its minimum).
+    let (first, f) = if frac >= half {
+        (cell, frac - half)
+    } else {
+        (cell.wrapping_sub(1), frac + half)
+    };
+    let g = R::ONE - f;
+    let w0 = g.mul_rn(g).mul_rn(half);
+    let w2 = f.mul_rn(f).mul_rn(half);
+    (first, [w0, R::ONE - w0 - w2, w2])
+}
+
+/// The orientation of a block of the coefficient grid: 48 in 3D, 8 in 2D.
+#[inline]
+pub(crate) fn block_variant<const D: usize>(seed: u32, block: [i32; D]) -> u32 {
+    orientation(seed, block, if D == 3 { 48 } else { 8 })
+}
+
+/// A 32-bit hash of a block coordinate and seed (murmur3's finaliser per component), mapped
+/// onto `0..count`.
+#[inline]
+fn orientation<const D: usize>(seed: u32, block: [i32; D], count: u32) -> u32 {
+    let mut h = seed ^ 0x9E37_79B9;
+    for b in block {
+        h ^= b as u32;
+        h = h.wrapping_mul(0x85EB_CA6B);
+        h ^= h >> 13;
+        h = h.wrapping_mul(0xC2B2_AE35);
+        h ^= h >> 16;
+    }
+    ((h as u64 * count as u64) >> 32) as u32
+}
+
+/// Axis permutations of 3 axes (output axis → tile axis).
+const PERMUTATIONS3: [[usize; 3]; 6] = [
+    [0, 1, 2],
+    [0, 2, 1],
+    [1, 0, 2],
+    [1, 2, 0],
+    [2, 0, 1],
+    [2, 1, 0],
+];
+
+/// Maps a local index in block orientation `v` to the tile index.
+#[inline]
+pub(crate) fn orient<const D: usize>(local: [usize; D], v: u32, n: usize) -> [usize; D] {
+    let perms = D as u32 * (D as u32 - 1).max(1); // 6 in 3D, 2 in 2D
+    let (p, flips) = (v % perms, v / perms);
+    let mut out = [0usize; D];
+    for a in 0..D {
+        let target = if D == 3 {
+            PERMUTATIONS3[p as usize][a]
+        } else {
+            a ^ p as usize
+        };
+        let l = local[a];
+        out[target] = if flips >> a & 1 == 1 { n - 1 - l } else { l };
+    }
+    out
+}
+
+impl<'t, T> Wavelet<'t, T> {
+    /// `Σ_c w(c) n_c` over the 3ᵈ coefficients around `p`.
+    #[inline]
+    fn evaluate<R: Real, const D: usize>(&self, p: [R; D]) -> R
+    where
+        T: TileData<D>,
+    {
+        const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
+        let n = T::SIZE as i32;
+        let mut weights = [[R::ZERO; 3]; D];
+        let mut block = [0i32; D];
+        let mut local = [[0usize; 3]; D];
+        let mut crosses = [[false; 3]; D];
+        for a in 0..D {
+            let (first, w) = bspline3(p[a]);
+            weights[a] = w;
+            block[a] = first.div_euclid(n);
+            let l0 = first.rem_euclid(n) as usize;
+            for j in 0..3 {
+                let l = l0 + j;
+                crosses[a][j] = l >= n as usize;
+                local[a][j] = if crosses[a][j] { l - n as usize } else { l };
+            }
+        }
+        // The orientation of each block the 3ᵈ coefficients touch (at most 2 per axis).
+        let mut variants = [0u32; 8];
+        if self.tiling == Tiling::Varied {
+            for (m, v) in variants.iter_mut().enumerate().take(1 << D) {
+                let mut b = block;
+                for (a, ba) in b.iter_mut().enumerate() {
+                    *ba = ba.wrapping_add((m >> a & 1) as i32);
+                }
+                *v = block_variant(self.seed, b);
+            }
+        }
+        // Separable sum: innermost over x.
+        let mut sum = R::ZERO;
+        let total = if D == 3 { 27 } else { 9 };
+        let mut partial = [R::ZERO; 3]; // running sums over x (per y) and y (per z)
+        let mut row = R::ZERO;
+        for k in 0..total {
+            let j = [k % 3, (k / 3) % 3, k / 9];
+            let mut mask = 0usize;
+            let mut idx = [0usize; D];
+            for a in 0..D {
+                idx[a] = local[a][j[a]];
+                mask |= (crosses[a][j[a]] as usize) << a;
+            }
+            let c: R = self.tile.get(orient(idx, variants[mask], T::SIZE));
+            row = row + weights[0][j[0]].mul_rn(c);
+            if j[0] == 2 {
+                partial[j[1]] = row;
+                row = R::ZERO;
+                if j[1] == 2 {
+                    let plane = weights[1][0].mul_rn(partial[0])
+                        + weights[1][1].mul_rn(partial[1])
+                        + weights[1][2].mul_rn(partial[2]);
+                    sum = if D == 3 {
+                        sum + weights[D - 1][j[D - 1]].mul_rn(plane)
+                    } else {
+                        plane
+                    };
+                }
+            }
+        }
+        sum.canonical()
+    }
+}
+
+impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        self.evaluate(p)
+    }
+
+    /// `|Σ_c w(c) n_c| ≤ max |n_c|`: the weights are non-negative and sum to 1. Plus 2⁻¹⁰ for
+    /// rounding, as for the lattice noises.
+    fn amplitude_bound(&self) -> f32 {
+        self.tile.max_abs() * (1.0 + 1e-6) + crate::lattice::ROUNDING
+    }
+}

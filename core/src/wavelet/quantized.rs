@@ -1,0 +1,147 @@
+//! Tiles quantized to `i16` for flash-limited firmware: half the bytes of an `f32` tile.
+//!
+//! Each coefficient is stored as `q = round(n · 2^shift)` with the largest `shift` that keeps
+//! every `|q| ≤ 32767`. A power-of-two scale makes the conversion exact and cheap in every
+//! number type (`Real::from_ratio`): a shift in fixed point, an exact multiplication in floats.
+//! The error of a coefficient is at most `2^-(shift+1)`, and so is the error of a noise value
+//! (the B-spline weights are non-negative and sum to 1). For the default 3D tile the shift is 12:
+//! at most 1.2e-4 (measured in `tests/tests/wavelet.rs`).
+
+use crate::Real;
+
+use super::band::TileData;
+use super::tile::{Tile2, Tile3};
+
+/// The largest shift with `round(max_abs · 2^shift) ≤ 32767`.
+const fn shift_for(max_abs: f32) -> u32 {
+    let mut shift = 0;
+    while shift < 15 && (max_abs as f64) * ((1u32 << (shift + 1)) as f64) + 0.5 < 32767.0 {
+        shift += 1;
+    }
+    shift
+}
+
+/// Rounds to nearest (ties away from zero).
+const fn quantize(v: f32, shift: u32) -> i16 {
+    let x = v as f64 * (1u32 << shift) as f64;
+    (if x < 0.0 { x - 0.5 } else { x + 0.5 }) as i16
+}
+
+/// A 2D tile of `i16` coefficients with a power-of-two scale.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuantizedTile2<const N: usize> {
+    data: [[i16; N]; N],
+    shift: u32,
+    max_abs: f32,
+    variance: f32,
+}
+
+/// A 3D tile of `i16` coefficients with a power-of-two scale.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::wavelet::{QuantizedTile3, Tile3, Wavelet};
+/// use bandnoise::{I16F16, Noise};
+///
+/// const TILE: Tile3<8> = Tile3::generate(3);
+/// static SMALL: QuantizedTile3<8> = QuantizedTile3::quantize(&TILE);
+/// let band = Wavelet::new(&SMALL, 0);
+/// let v: I16F16 = band.sample([I16F16::from_num(1.5), I16F16::ZERO, I16F16::ONE]);
+/// let f: f32 = Wavelet::new(&TILE, 0).sample([1.5, 0.0, 1.0]);
+/// assert!((v.to_num::<f32>() - f).abs() < 1e-3);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct QuantizedTile3<const N: usize> {
+    data: [[[i16; N]; N]; N],
+    shift: u32,
+    max_abs: f32,
+    variance: f32,
+}
+
+impl<const N: usize> QuantizedTile2<N> {
+    /// The band's exact variance averaged over space (that of the tile quantized).
+    #[must_use]
+    pub const fn variance(&self) -> f32 {
+        self.variance
+    }
+
+    /// Quantizes `tile` (`const`).
+    #[must_use]
+    pub const fn quantize(tile: &Tile2<N>) -> Self {
+        let shift = shift_for(tile.max_abs);
+        let mut data = [[0i16; N]; N];
+        let mut i = 0;
+        while i < N * N {
+            data[i / N][i % N] = quantize(tile.data[i / N][i % N], shift);
+            i += 1;
+        }
+        Self {
+            data,
+            shift,
+            max_abs: tile.max_abs + 1.0 / (2u32 << shift) as f32,
+            variance: tile.variance,
+        }
+    }
+
+    /// Coefficients are `q · 2^-shift`.
+    #[must_use]
+    pub const fn shift(&self) -> u32 {
+        self.shift
+    }
+}
+
+impl<const N: usize> QuantizedTile3<N> {
+    /// The band's exact variance averaged over space (that of the tile quantized).
+    #[must_use]
+    pub const fn variance(&self) -> f32 {
+        self.variance
+    }
+
+    /// Quantizes `tile` (`const`).
+    #[must_use]
+    pub const fn quantize(tile: &Tile3<N>) -> Self {
+        let shift = shift_for(tile.max_abs);
+        let mut data = [[[0i16; N]; N]; N];
+        let mut i = 0;
+        while i < N * N * N {
+            let (z, y, x) = (i / (N * N), (i / N) % N, i % N);
+            data[z][y][x] = quantize(tile.data[z][y][x], shift);
+            i += 1;
+        }
+        Self {
+            data,
+            shift,
+            max_abs: tile.max_abs + 1.0 / (2u32 << shift) as f32,
+            variance: tile.variance,
+        }
+    }
+
+    /// Coefficients are `q · 2^-shift`.
+    #[must_use]
+    pub const fn shift(&self) -> u32 {
+        self.shift
+    }
+}
+
+impl<const N: usize> TileData<2> for QuantizedTile2<N> {
+    const SIZE: usize = N;
+    #[inline]
+    fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
+        R::from_ratio(self.data[y][x] as i32, self.shift)
+    }
+    fn max_abs(&self) -> f32 {
+        self.max_abs
+    }
+}
+
+impl<const N: usize> TileData<3> for QuantizedTile3<N> {
+    const SIZE: usize = N;
+    #[inline]
+    fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
+        R::from_ratio(self.data[z][y][x] as i32, self.shift)
+    }
+    fn max_abs(&self) -> f32 {
+        self.max_abs
+    }
+}
