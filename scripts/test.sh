@@ -27,6 +27,10 @@ done
 
 step "benchmarks compile and run once"
 cargo bench -p bandnoise-tests --bench lattice -- --test
+cargo bench -p bandnoise-tests --bench wavelet -- --test
+
+step "compile-time cost and size of wavelet tiles"
+bash scripts/measure-tiles.sh
 
 step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke

@@ -425,3 +425,22 @@ fn tiles_built_at_compile_time_equal_tiles_built_at_run_time() {
     // Different seeds, different tiles.
     assert_ne!(Tile2::<16>::generate(1), Tile2::<16>::generate(2));
 }
+
+#[test]
+fn default_tiles_have_the_documented_sizes() {
+    let sizes = [
+        ("TILE2", core::mem::size_of_val(&TILE2)),
+        ("TILE3", core::mem::size_of_val(&TILE3)),
+        ("TILE2_I16", core::mem::size_of_val(&TILE2_I16)),
+        ("TILE3_I16", core::mem::size_of_val(&TILE3_I16)),
+    ];
+    println!("flash bytes of the default tiles: {sizes:?}");
+    // Coefficients plus a few bytes of metadata (bound, variance, shift).
+    for ((_, bytes), coefficients) in
+        sizes
+            .iter()
+            .zip([64 * 64 * 4, 32 * 32 * 32 * 4, 64 * 64 * 2, 32 * 32 * 32 * 2])
+    {
+        assert!(*bytes >= coefficients && *bytes <= coefficients + 16);
+    }
+}

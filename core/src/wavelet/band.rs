@@ -23,6 +23,8 @@ pub trait TileData<const D: usize> {
     const SIZE: usize;
     /// The coefficient at an in-range index (each component below `SIZE`; index 0 is x).
     fn get<R: Real>(&self, index: [usize; D]) -> R;
+    /// The coefficient at flat index `x + SIZE·y (+ SIZE²·z)`, below `SIZE^D`.
+    fn flat<R: Real>(&self, index: usize) -> R;
     /// The largest `|coefficient|`.
     fn max_abs(&self) -> f32;
 }
@@ -32,6 +34,10 @@ impl<const N: usize> TileData<2> for Tile2<N> {
     #[inline]
     fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
         R::from_f32(self.data[y][x])
+    }
+    #[inline]
+    fn flat<R: Real>(&self, index: usize) -> R {
+        R::from_f32(self.data.as_flattened()[index])
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -43,6 +49,10 @@ impl<const N: usize> TileData<3> for Tile3<N> {
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
         R::from_f32(self.data[z][y][x])
+    }
+    #[inline]
+    fn flat<R: Real>(&self, index: usize) -> R {
+        R::from_f32(self.data.as_flattened().as_flattened()[index])
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -191,70 +201,116 @@ pub(crate) fn orient<const D: usize>(local: [usize; D], v: u32, n: usize) -> [us
     out
 }
 
+/// How block orientation `v` maps output axis `a`: the tile axis it reads and whether it runs
+/// backwards.
+#[inline]
+fn axis_map<const D: usize>(v: u32, a: usize) -> (usize, bool) {
+    let perms = if D == 3 { 6 } else { 2 };
+    let (p, flips) = (v % perms, v / perms);
+    let target = if D == 3 {
+        PERMUTATIONS3[p as usize][a]
+    } else {
+        a ^ p as usize
+    };
+    (target, flips >> a & 1 == 1)
+}
+
 impl<'t, T> Wavelet<'t, T> {
     /// `Σ_c w(c) n_c` over the 3ᵈ coefficients around `p`.
+    ///
+    /// For each block the 3ᵈ coefficients touch (usually one; at most 2ᵈ), the block's
+    /// orientation is resolved once into per-axis offsets of the tile's flat index, so each
+    /// coefficient costs D additions and a load.
     #[inline]
     fn evaluate<R: Real, const D: usize>(&self, p: [R; D]) -> R
     where
         T: TileData<D>,
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
-        let n = T::SIZE as i32;
+        let n = T::SIZE;
         let mut weights = [[R::ZERO; 3]; D];
         let mut block = [0i32; D];
-        let mut local = [[0usize; 3]; D];
-        let mut crosses = [[false; 3]; D];
+        let mut local0 = [0usize; D];
+        let mut crossing = 0usize; // axes whose three coefficients reach the next block
         for a in 0..D {
             let (first, w) = bspline3(p[a]);
             weights[a] = w;
-            block[a] = first.div_euclid(n);
-            let l0 = first.rem_euclid(n) as usize;
-            for j in 0..3 {
-                let l = l0 + j;
-                crosses[a][j] = l >= n as usize;
-                local[a][j] = if crosses[a][j] { l - n as usize } else { l };
+            block[a] = first.div_euclid(n as i32);
+            local0[a] = first.rem_euclid(n as i32) as usize;
+            if local0[a] + 2 >= n {
+                crossing |= 1 << a;
             }
         }
-        // The orientation of each block the 3ᵈ coefficients touch (at most 2 per axis).
-        let mut variants = [0u32; 8];
-        if self.tiling == Tiling::Varied {
-            for (m, v) in variants.iter_mut().enumerate().take(1 << D) {
+        let variant = |m: usize| match self.tiling {
+            Tiling::Periodic => 0,
+            Tiling::Varied => {
                 let mut b = block;
                 for (a, ba) in b.iter_mut().enumerate() {
                     *ba = ba.wrapping_add((m >> a & 1) as i32);
                 }
-                *v = block_variant(self.seed, b);
+                block_variant(self.seed, b)
             }
-        }
-        // Separable sum: innermost over x.
-        let mut sum = R::ZERO;
-        let total = if D == 3 { 27 } else { 9 };
-        let mut partial = [R::ZERO; 3]; // running sums over x (per y) and y (per z)
-        let mut row = R::ZERO;
-        for k in 0..total {
-            let j = [k % 3, (k / 3) % 3, k / 9];
-            let mut mask = 0usize;
-            let mut idx = [0usize; D];
+        };
+        // The flat-index contribution of coefficient j along each axis, read in orientation v.
+        let axis_offsets = |v: u32| -> [[usize; 3]; D] {
+            let mut off = [[0usize; 3]; D];
             for a in 0..D {
-                idx[a] = local[a][j[a]];
-                mask |= (crosses[a][j[a]] as usize) << a;
+                let (target, flip) = axis_map::<D>(v, a);
+                let stride = if target == 0 {
+                    1
+                } else if target == 1 {
+                    n
+                } else {
+                    n * n
+                };
+                for (j, o) in off[a].iter_mut().enumerate() {
+                    let l = local0[a] + j;
+                    let l = if l >= n { l - n } else { l };
+                    *o = (if flip { n - 1 - l } else { l }) * stride;
+                }
             }
-            let c: R = self.tile.get(orient(idx, variants[mask], T::SIZE));
-            row = row + weights[0][j[0]].mul_rn(c);
-            if j[0] == 2 {
-                partial[j[1]] = row;
-                row = R::ZERO;
-                if j[1] == 2 {
-                    let plane = weights[1][0].mul_rn(partial[0])
-                        + weights[1][1].mul_rn(partial[1])
-                        + weights[1][2].mul_rn(partial[2]);
-                    sum = if D == 3 {
-                        sum + weights[D - 1][j[D - 1]].mul_rn(plane)
+            off
+        };
+        // Along each axis, coefficients j < split[a] lie in the block, the rest in the next.
+        let mut split = [3usize; D];
+        for a in 0..D {
+            split[a] = (n - local0[a]).min(3);
+        }
+        // Sum block by block: each block's coefficients form a separable sub-range.
+        let mut sum = R::ZERO;
+        let mut m = crossing;
+        loop {
+            let off = axis_offsets(variant(m));
+            let range = |a: usize| {
+                if m >> a & 1 == 1 {
+                    split[a]..3
+                } else {
+                    0..split[a]
+                }
+            };
+            let planes = if D == 3 { range(2) } else { 0..1 };
+            for jz in planes {
+                let zoff = if D == 3 { off[D - 1][jz] } else { 0 };
+                let mut plane = R::ZERO;
+                for jy in range(1) {
+                    let base = zoff + off[1][jy];
+                    let mut row = R::ZERO;
+                    for jx in range(0) {
+                        row = row + weights[0][jx].mul_rn(self.tile.flat(base + off[0][jx]));
+                    }
+                    plane = plane + weights[1][jy].mul_rn(row);
+                }
+                sum = sum
+                    + if D == 3 {
+                        weights[D - 1][jz].mul_rn(plane)
                     } else {
                         plane
                     };
-                }
             }
+            if m == 0 {
+                break;
+            }
+            m = (m - 1) & crossing; // the next subset of the crossing axes
         }
         sum.canonical()
     }

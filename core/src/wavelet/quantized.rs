@@ -130,6 +130,10 @@ impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
         R::from_ratio(self.data[y][x] as i32, self.shift)
     }
+    #[inline]
+    fn flat<R: Real>(&self, index: usize) -> R {
+        R::from_ratio(self.data.as_flattened()[index] as i32, self.shift)
+    }
     fn max_abs(&self) -> f32 {
         self.max_abs
     }
@@ -140,6 +144,13 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
         R::from_ratio(self.data[z][y][x] as i32, self.shift)
+    }
+    #[inline]
+    fn flat<R: Real>(&self, index: usize) -> R {
+        R::from_ratio(
+            self.data.as_flattened().as_flattened()[index] as i32,
+            self.shift,
+        )
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
