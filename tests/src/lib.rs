@@ -155,6 +155,23 @@ impl Lattice {
     }
 }
 
+/// Samples `f(x, y)` over an `n × n` grid `step` apart and sums the results (for benchmarks:
+/// the sum keeps the work from being optimised away).
+pub fn grid_sum<R: Real>(n: usize, step: f32, f: impl Fn(R, R) -> R) -> R {
+    let step = R::from_f32(step);
+    let mut acc = R::ZERO;
+    let mut y = R::ZERO;
+    for _ in 0..n {
+        let mut x = R::ZERO;
+        for _ in 0..n {
+            acc = acc.saturating_add(f(std::hint::black_box(x), std::hint::black_box(y)));
+            x = x + step;
+        }
+        y = y + step;
+    }
+    acc
+}
+
 /// Pearson correlation of two equally long samples.
 pub fn correlation(a: &[f64], b: &[f64]) -> f64 {
     assert_eq!(a.len(), b.len());
