@@ -13,6 +13,7 @@ rustup toolchain install # installs the pinned channel, components and targets; 
 step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
+cargo clippy -p bandnoise-wasm --target wasm32-unknown-unknown --all-targets -- -D warnings
 
 step "unit, integration and doc tests"
 cargo test --workspace
@@ -31,6 +32,15 @@ cargo bench -p bandnoise-tests --bench wavelet -- --test
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
+
+step "browser: Chromium, wasm build, wasm-bindgen tests, end-to-end test"
+if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then
+    apt-get update
+    apt-get install -y chromium chromium-driver
+fi
+bash scripts/build-web.sh
+CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
+node tests/e2e/demo.test.mjs
 
 step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke

@@ -1,0 +1,171 @@
+// End-to-end test of the demo page in Debian's Chromium, driven by playwright-core.
+// Serves web/ on 127.0.0.1, then checks what a person would: it renders, every noise differs,
+// dragging a band bar changes the spectrum, f32 and fixed point agree, bad input shows a message
+// and leaves the page working, and the browser benchmark runs. Screenshots go to target/e2e/.
+// Prints "N passed, N failed" and exits non-zero on any failure.
+import { chromium } from 'playwright-core';
+import { spawn } from 'node:child_process';
+import { mkdirSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import assert from 'node:assert/strict';
+
+const PORT = 8123;
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const artifacts = `${root}target/e2e`;
+mkdirSync(artifacts, { recursive: true });
+
+const server = spawn('python3', ['-m', 'http.server', String(PORT), '--bind', '127.0.0.1', '--directory', `${root}web`], { stdio: 'ignore' });
+const base = `http://127.0.0.1:${PORT}`;
+for (let i = 0; ; i++) {
+  try { await fetch(`${base}/index.html`); break; } catch (e) { if (i > 50) throw e; await new Promise((r) => setTimeout(r, 100)); }
+}
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+  args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+    '--disable-sync', '--no-first-run', '--disable-quic'],
+});
+const page = await browser.newPage({ viewport: { width: 1300, height: 1250 } });
+const pageErrors = [];
+page.on('pageerror', (e) => pageErrors.push(String(e)));
+await page.goto(`${base}/index.html`);
+await page.waitForFunction(() => window.bandnoise && window.bandnoise.ready, null, { timeout: 30000 });
+
+/** Statistics of a canvas: variance of its red channel, a hash, and its pixels' red values. */
+const canvas = (id) => page.evaluate((id) => {
+  const c = document.getElementById(id);
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+  let sum = 0, sum2 = 0, hash = 2166136261;
+  const red = [];
+  for (let i = 0; i < d.length; i += 4) {
+    sum += d[i]; sum2 += d[i] * d[i]; red.push(d[i]);
+    hash = Math.imul(hash ^ d[i] ^ (d[i + 1] << 8) ^ (d[i + 2] << 16), 16777619);
+  }
+  const n = d.length / 4;
+  return { variance: sum2 / n - (sum / n) ** 2, hash: hash >>> 0, red };
+}, id);
+const renders = () => page.evaluate(() => window.bandnoise.renders);
+const message = () => page.textContent('#message');
+/** Changes a control and waits for the frame it causes. */
+async function set(id, value) {
+  const before = await renders();
+  const tag = await page.evaluate((id) => document.getElementById(id).tagName, id);
+  if (tag === 'SELECT') await page.selectOption(`#${id}`, value); else await page.fill(`#${id}`, value);
+  await page.waitForFunction((n) => window.bandnoise.renders > n || window.bandnoise.lastError, before);
+}
+async function dragBand(i, weight) {
+  await page.locator('#bands').scrollIntoViewIfNeeded();
+  const box = await page.locator('#bands').boundingBox();
+  const x = box.x + ((i + 0.5) / 8) * box.width;
+  await page.mouse.move(x, box.y + box.height - 50);
+  await page.mouse.down();
+  // Weight 0: drag past the baseline, as a person would (the page clamps to [0, 1]).
+  const y = weight === 0 ? box.y + box.height + 10 : box.y + box.height - weight * 100 - 0.5;
+  await page.mouse.move(x, y, { steps: 4 });
+  await page.mouse.up();
+}
+
+const results = [];
+async function test(name, body) {
+  try { await body(); results.push([name, true]); console.log(`ok   ${name}`); }
+  catch (e) { results.push([name, false]); console.log(`FAIL ${name}\n     ${e.message}`); }
+}
+
+await test('the page renders noise with non-trivial variance', async () => {
+  const s = await canvas('noise');
+  assert.ok(s.variance > 200, `variance ${s.variance}`);
+  assert.equal(await message(), '');
+  await page.screenshot({ path: `${artifacts}/demo-perlin.png` });
+});
+
+await test('every noise kind gives a different image', async () => {
+  const hashes = new Map();
+  for (const kind of ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'wavelet']) {
+    await set('kind', kind);
+    const s = await canvas('noise');
+    assert.ok(s.variance > 200, `${kind}: variance ${s.variance}`);
+    hashes.set(kind, s.hash);
+    await page.screenshot({ path: `${artifacts}/demo-${kind}.png` });
+  }
+  assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+});
+
+await test('dragging a band-weight bar changes the spectrum', async () => {
+  await set('kind', 'wavelet');
+  const before = await canvas('spectrum');
+  const n = await renders();
+  await dragBand(7, 1.0);
+  await dragBand(4, 0.0);
+  await page.waitForFunction((k) => window.bandnoise.renders > k, n);
+  const after = await canvas('spectrum');
+  assert.notEqual(before.hash, after.hash);
+  let diff = 0;
+  for (let i = 0; i < after.red.length; i++) diff += Math.abs(after.red[i] - before.red[i]);
+  assert.ok(diff / after.red.length > 2, `mean spectrum change ${diff / after.red.length}`);
+  await page.screenshot({ path: `${artifacts}/demo-wavelet-bands.png` });
+});
+
+await test('f32 and fixed point give nearly the same image', async () => {
+  await set('kind', 'perlin');
+  await set('number', 'f32');
+  const a = await canvas('noise');
+  await set('number', 'fixed');
+  const b = await canvas('noise');
+  let diff = 0, worst = 0;
+  for (let i = 0; i < a.red.length; i++) { const d = Math.abs(a.red[i] - b.red[i]); diff += d; worst = Math.max(worst, d); }
+  assert.ok(diff / a.red.length < 0.5 && worst <= 3, `mean ${diff / a.red.length}, worst ${worst}`);
+  await set('number', 'f32');
+});
+
+await test('bad input shows a message and leaves the page working', async () => {
+  const bad = {
+    seed: ['NaN', '', '-1', '1e99', 'abc', '1.5'],
+    zoom: ['0', '-5', 'NaN', '', '1e99'],
+    time: ['NaN', '', '1e40'],
+    octaves: ['0', '100', '2.5', ''],
+    lacunarity: ['NaN', '-1', '1e9'],
+    gain: ['5', 'NaN', ''],
+  };
+  await set('fractal', 'fbm');
+  for (const [field, values] of Object.entries(bad)) {
+    const good = await page.inputValue(`#${field}`);
+    for (const v of values) {
+      await set(field, v);
+      const m = await message();
+      assert.ok(m.length > 0, `${field}=${JSON.stringify(v)} shows no message`);
+    }
+    await set(field, good);
+    assert.equal(await message(), '', `${field} restored, message stays`);
+    assert.ok((await canvas('noise')).variance > 200);
+  }
+  await set('fractal', 'none');
+  // Every band weight dragged to zero.
+  await set('kind', 'wavelet');
+  for (let i = 0; i < 8; i++) await dragBand(i, 0);
+  await page.waitForFunction(() => window.bandnoise.lastError.includes('band weight'));
+  await page.screenshot({ path: `${artifacts}/demo-bad-input.png` });
+  await dragBand(4, 1);
+  await page.waitForFunction(() => window.bandnoise.lastError === '');
+  assert.ok((await canvas('noise')).variance > 200);
+  assert.deepEqual(pageErrors, []);
+});
+
+// Goal (issue 4): bandnoise ≥ 3× the samples per second of simplex-noise. Measured and
+// printed here; not yet met (see README), so the test checks that the benchmark runs and is sane.
+await test('the browser benchmark runs against simplex-noise in the same Chromium', async () => {
+  const bench = await browser.newPage();
+  await bench.goto(`${base}/bench.html`);
+  await bench.waitForFunction(() => window.benchResults, null, { timeout: 120000 });
+  const r = await bench.evaluate(() => window.benchResults);
+  for (const [name, v] of Object.entries(r)) console.log(`     ${name.padEnd(8)} ${v.msps.toFixed(1).padStart(7)} Msamples/s  ${v.ratio.toFixed(2)}× simplex-noise`);
+  await bench.screenshot({ path: `${artifacts}/bench.png` });
+  for (const name of ['simplex', 'perlin', 'mnoise', 'wavelet']) {
+    assert.ok(Number.isFinite(r[name].checksum) && r[name].msps > 1, `${name}: ${JSON.stringify(r[name])}`);
+  }
+});
+
+await browser.close();
+server.kill();
+const failed = results.filter(([, ok]) => !ok).length;
+console.log(`${results.length - failed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);

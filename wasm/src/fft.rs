@@ -1,0 +1,100 @@
+//! A radix-2 FFT for the spectrum view (sizes are powers of two).
+
+/// In-place forward FFT of `re`, `im` (length a power of two).
+pub(crate) fn fft(re: &mut [f32], im: &mut [f32]) {
+    let n = re.len();
+    debug_assert!(n.is_power_of_two() && im.len() == n);
+    // Bit reversal.
+    let mut j = 0;
+    for i in 1..n {
+        let mut bit = n >> 1;
+        while j & bit != 0 {
+            j ^= bit;
+            bit >>= 1;
+        }
+        j |= bit;
+        if i < j {
+            re.swap(i, j);
+            im.swap(i, j);
+        }
+    }
+    let mut len = 2;
+    while len <= n {
+        let angle = -2.0 * core::f32::consts::PI / len as f32;
+        let (wr, wi) = (angle.cos(), angle.sin());
+        for start in (0..n).step_by(len) {
+            let (mut cr, mut ci) = (1.0f32, 0.0f32);
+            for k in 0..len / 2 {
+                let (a, b) = (start + k, start + k + len / 2);
+                let tr = re[b] * cr - im[b] * ci;
+                let ti = re[b] * ci + im[b] * cr;
+                re[b] = re[a] - tr;
+                im[b] = im[a] - ti;
+                re[a] += tr;
+                im[a] += ti;
+                (cr, ci) = (cr * wr - ci * wi, cr * wi + ci * wr);
+            }
+        }
+        len <<= 1;
+    }
+}
+
+/// `log(1 + |F|²)` of a square `side × side` grid, DC in the centre, scaled to 0..=255.
+pub(crate) fn log_spectrum(values: &[f32], side: usize, out: &mut [u8]) {
+    let mut re: Vec<f32> = values.to_vec();
+    let mean = re.iter().sum::<f32>() / re.len() as f32;
+    re.iter_mut().for_each(|v| *v -= mean);
+    let mut im = vec![0.0f32; re.len()];
+    for (r, i) in re.chunks_mut(side).zip(im.chunks_mut(side)) {
+        fft(r, i);
+    }
+    let (mut cr, mut ci) = (vec![0.0; side], vec![0.0; side]);
+    for x in 0..side {
+        for y in 0..side {
+            cr[y] = re[y * side + x];
+            ci[y] = im[y * side + x];
+        }
+        fft(&mut cr, &mut ci);
+        for y in 0..side {
+            re[y * side + x] = cr[y];
+            im[y * side + x] = ci[y];
+        }
+    }
+    let mut power: Vec<f32> = re
+        .iter()
+        .zip(&im)
+        .map(|(r, i)| (1.0 + r * r + i * i).ln())
+        .collect();
+    let max = power.iter().cloned().fold(0.0f32, f32::max).max(1e-6);
+    power.iter_mut().for_each(|p| *p /= max);
+    let h = side / 2;
+    for y in 0..side {
+        for x in 0..side {
+            let (sx, sy) = ((x + h) % side, (y + h) % side);
+            out[y * side + x] = (power[sy * side + sx] * 255.0) as u8;
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fft_of_a_cosine_has_two_peaks() {
+        let n = 64;
+        let mut re: Vec<f32> = (0..n)
+            .map(|i| (2.0 * core::f32::consts::PI * 5.0 * i as f32 / n as f32).cos())
+            .collect();
+        let mut im = vec![0.0; n];
+        fft(&mut re, &mut im);
+        for (k, (r, i)) in re.iter().zip(&im).enumerate() {
+            let mag = r.hypot(*i);
+            if k == 5 || k == n - 5 {
+                assert!((mag - 32.0).abs() < 1e-3, "{k}: {mag}");
+            } else {
+                assert!(mag < 1e-3, "{k}: {mag}");
+            }
+        }
+    }
+}

@@ -1,0 +1,211 @@
+//! What the page asks for, checked.
+
+use bandnoise::fractal::{Kind, Octaves};
+use bandnoise::wavelet::{Bands, Distribution};
+use wasm_bindgen::prelude::*;
+
+/// A noise the demo can show.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NoiseKind {
+    /// Perlin's improved noise.
+    Perlin,
+    /// Perlin's 1985 noise.
+    Original,
+    /// Value noise.
+    Value,
+    /// Olano's cNoise.
+    CNoise,
+    /// Olano's mNoise.
+    MNoise,
+    /// Cook & DeRose's multiband wavelet noise.
+    Wavelet,
+}
+
+impl NoiseKind {
+    fn parse(s: &str) -> Result<Self, String> {
+        Ok(match s {
+            "perlin" => Self::Perlin,
+            "original" => Self::Original,
+            "value" => Self::Value,
+            "cnoise" => Self::CNoise,
+            "mnoise" => Self::MNoise,
+            "wavelet" => Self::Wavelet,
+            _ => return Err(format!("unknown noise kind {s:?}")),
+        })
+    }
+}
+
+/// The settings of one frame, built and validated from JavaScript.
+#[wasm_bindgen]
+#[derive(Clone, Debug)]
+pub struct Params {
+    pub(crate) kind: NoiseKind,
+    pub(crate) fixed: bool,
+    pub(crate) seed: u32,
+    pub(crate) zoom: f32,
+    pub(crate) pan: [f32; 2],
+    pub(crate) time: f32,
+    pub(crate) fractal: Option<Kind>,
+    pub(crate) octaves: u32,
+    pub(crate) lacunarity: f32,
+    pub(crate) gain: f32,
+    pub(crate) bands: Bands,
+    pub(crate) distribution: Distribution,
+    pub(crate) projected: bool,
+    pub(crate) marble: bool,
+}
+
+fn finite(name: &str, v: f64) -> Result<f32, String> {
+    if v.is_finite() && v.abs() <= 1e30 {
+        Ok(v as f32)
+    } else {
+        Err(format!("{name} must be a finite number, not {v}"))
+    }
+}
+
+#[wasm_bindgen]
+impl Params {
+    /// Checks and builds the settings.
+    ///
+    /// # Errors
+    ///
+    /// A message naming the first bad field: an unknown kind, fractal, number type,
+    /// distribution or palette; a zoom that is not a positive finite number (at most 1e6);
+    /// a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; band weights that
+    /// are not finite, too many, or all zero for wavelet noise; and the core's own errors.
+    #[wasm_bindgen(constructor)]
+    #[allow(clippy::too_many_arguments)]
+    pub fn new(
+        kind: &str,
+        number: &str,
+        seed: f64,
+        zoom: f64,
+        pan_x: f64,
+        pan_y: f64,
+        time: f64,
+        fractal: &str,
+        octaves: f64,
+        lacunarity: f64,
+        gain: f64,
+        band_weights: &[f32],
+        distribution: &str,
+        projected: bool,
+        palette: &str,
+    ) -> Result<Params, JsValue> {
+        Self::check(
+            kind,
+            number,
+            seed,
+            zoom,
+            pan_x,
+            pan_y,
+            time,
+            fractal,
+            octaves,
+            lacunarity,
+            gain,
+            band_weights,
+            distribution,
+            projected,
+            palette,
+        )
+        .map_err(|e| JsValue::from_str(&e))
+    }
+}
+
+impl Params {
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn check(
+        kind: &str,
+        number: &str,
+        seed: f64,
+        zoom: f64,
+        pan_x: f64,
+        pan_y: f64,
+        time: f64,
+        fractal: &str,
+        octaves: f64,
+        lacunarity: f64,
+        gain: f64,
+        band_weights: &[f32],
+        distribution: &str,
+        projected: bool,
+        palette: &str,
+    ) -> Result<Params, String> {
+        let kind = NoiseKind::parse(kind)?;
+        let fixed = match number {
+            "f32" => false,
+            "fixed" => true,
+            _ => {
+                return Err(format!(
+                    "number type must be \"f32\" or \"fixed\", not {number:?}"
+                ));
+            }
+        };
+        if !(seed.is_finite() && seed >= 0.0 && seed <= u32::MAX as f64 && seed.fract() == 0.0) {
+            return Err(format!(
+                "seed must be a whole number from 0 to {}, not {seed}",
+                u32::MAX
+            ));
+        }
+        let zoom = finite("zoom", zoom)?;
+        if !(zoom > 0.0 && zoom <= 1e6) {
+            return Err(format!("zoom must be positive and at most 1e6, not {zoom}"));
+        }
+        let pan = [finite("pan x", pan_x)?, finite("pan y", pan_y)?];
+        let time = finite("time", time)?;
+        let fractal = match fractal {
+            "none" => None,
+            "fbm" => Some(Kind::Fbm),
+            "turbulence" => Some(Kind::Turbulence),
+            "ridged" => Some(Kind::Ridged),
+            _ => {
+                return Err(format!(
+                    "fractal must be none, fbm, turbulence or ridged, not {fractal:?}"
+                ));
+            }
+        };
+        if !(octaves.is_finite() && (1.0..=16.0).contains(&octaves) && octaves.fract() == 0.0) {
+            return Err(format!(
+                "octaves must be a whole number from 1 to 16, not {octaves}"
+            ));
+        }
+        let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
+        // The core checks the ranges and says why.
+        Octaves::<f32>::new(octaves as u32, lacunarity, gain).map_err(|e| e.to_string())?;
+        let bands = Bands::new(-3, band_weights).map_err(|e| e.to_string())?;
+        if kind == NoiseKind::Wavelet && band_weights.iter().all(|w| *w == 0.0) {
+            return Err("every band weight is zero: raise at least one band".into());
+        }
+        let distribution = match distribution {
+            "gaussian" => Distribution::Gaussian,
+            "uniform" => Distribution::Uniform,
+            _ => {
+                return Err(format!(
+                    "distribution must be gaussian or uniform, not {distribution:?}"
+                ));
+            }
+        };
+        let marble = match palette {
+            "grey" => false,
+            "marble" => true,
+            _ => return Err(format!("palette must be grey or marble, not {palette:?}")),
+        };
+        Ok(Params {
+            kind,
+            fixed,
+            seed: seed as u32,
+            zoom,
+            pan,
+            time,
+            fractal,
+            octaves: octaves as u32,
+            lacunarity,
+            gain,
+            bands,
+            distribution,
+            projected,
+            marble,
+        })
+    }
+}

@@ -1,0 +1,247 @@
+//! One frame: sample the chosen noise over the view, colour it, and keep what the page shows.
+
+use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::wavelet::{DEFAULT_TILE_SEED, Multiband, QuantizedTile3, TILE2_I16, Tile3, Wavelet};
+use bandnoise::{I16F16, Noise, Real};
+use wasm_bindgen::Clamped;
+use wasm_bindgen::prelude::*;
+use web_sys::{CanvasRenderingContext2d, ImageData};
+
+use crate::fft::log_spectrum;
+use crate::palette::color;
+use crate::params::{NoiseKind, Params};
+
+/// The demo's 3D wavelet tile: 16³ `i16` coefficients (8 KiB) rather than the crate's 128 KiB
+/// default, to keep the module small; hashed orientations hide its repetition.
+static WEB_TILE3: QuantizedTile3<16> =
+    QuantizedTile3::quantize(&Tile3::generate(DEFAULT_TILE_SEED));
+
+/// Histogram bins over `[-4σ, 4σ]` of the frame's standardised values.
+pub const HISTOGRAM_BINS: usize = 64;
+
+/// A square frame of `size × size` samples and the buffers the page draws from, reused from
+/// frame to frame.
+#[wasm_bindgen]
+pub struct Demo {
+    size: usize,
+    values: Vec<f32>,
+    rgba: Vec<u8>,
+    spectrum: Vec<u8>,
+    spectrum_rgba: Vec<u8>,
+    histogram: Vec<u32>,
+    mean: f32,
+    std_dev: f32,
+}
+
+/// Samples `noise` at every pixel of the view into `values`.
+fn fill<R: Real, N: Noise<R, 3>>(noise: &N, p: &Params, size: usize, values: &mut [f32]) {
+    let half = size as f32 / 2.0;
+    let t = R::from_f32(p.time);
+    for (j, row) in values.chunks_mut(size).enumerate() {
+        let y = R::from_f32(p.pan[1] + (j as f32 - half) / p.zoom);
+        for (i, v) in row.iter_mut().enumerate() {
+            let x = R::from_f32(p.pan[0] + (i as f32 - half) / p.zoom);
+            *v = noise.sample([x, y, t]).to_f32();
+        }
+    }
+}
+
+/// Fills with a lattice noise, plain or in a fractal sum.
+fn fill_lattice<R: Real, N: Noise<R, 3>>(noise: N, p: &Params, size: usize, values: &mut [f32]) {
+    match p.fractal {
+        None => fill(&noise, p, size, values),
+        Some(kind) => {
+            // Checked when the Params were built.
+            let octaves = Octaves::<R>::new(p.octaves, p.lacunarity, p.gain).unwrap_or_default();
+            fill(&Fractal::new(noise, octaves, kind), p, size, values)
+        }
+    }
+}
+
+/// Projected multiband noise as a 3D `Noise` (projection along z, the time axis).
+struct Projected<'a>(Multiband<'a, QuantizedTile3<16>>);
+
+impl<R: Real> Noise<R, 3> for Projected<'_> {
+    fn sample(&self, p: [R; 3]) -> R {
+        self.0.sample_projected(p, [R::ZERO, R::ZERO, R::ONE])
+    }
+    fn amplitude_bound(&self) -> f32 {
+        self.0.projected_bound()
+    }
+}
+
+fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
+    let s = p.seed;
+    match p.kind {
+        NoiseKind::Perlin => fill_lattice::<R, _>(Perlin::new(s), p, size, values),
+        NoiseKind::Original => fill_lattice::<R, _>(OriginalPerlin::new(s), p, size, values),
+        NoiseKind::Value => fill_lattice::<R, _>(ValueNoise::new(s), p, size, values),
+        NoiseKind::CNoise => fill_lattice::<R, _>(CNoise::new(s), p, size, values),
+        NoiseKind::MNoise => fill_lattice::<R, _>(MNoise::<61>::new(s), p, size, values),
+        NoiseKind::Wavelet => {
+            let m = Multiband::new(&WEB_TILE3, s, p.bands.clone(), p.distribution);
+            if p.projected {
+                fill::<R, _>(&Projected(m), p, size, values)
+            } else {
+                fill::<R, _>(&m, p, size, values)
+            }
+        }
+    }
+}
+
+#[wasm_bindgen]
+impl Demo {
+    /// A frame of `size × size` samples; `size` must be a power of two from 16 to 1024.
+    ///
+    /// # Errors
+    ///
+    /// A message if `size` is not such a power of two.
+    #[wasm_bindgen(constructor)]
+    pub fn new(size: u32) -> Result<Demo, JsValue> {
+        if !(16..=1024).contains(&size) || !size.is_power_of_two() {
+            return Err(JsValue::from_str(&format!(
+                "size must be a power of two from 16 to 1024, not {size}"
+            )));
+        }
+        let n = (size * size) as usize;
+        Ok(Demo {
+            size: size as usize,
+            values: vec![0.0; n],
+            rgba: vec![255; n * 4],
+            spectrum: vec![0; n],
+            spectrum_rgba: vec![255; n * 4],
+            histogram: vec![0; HISTOGRAM_BINS],
+            mean: 0.0,
+            std_dev: 0.0,
+        })
+    }
+
+    /// Renders one frame for `params`: samples, statistics, colours, histogram.
+    pub fn render(&mut self, params: &Params) {
+        if params.fixed {
+            fill_any::<I16F16>(params, self.size, &mut self.values);
+        } else {
+            fill_any::<f32>(params, self.size, &mut self.values);
+        }
+        let n = self.values.len() as f64;
+        let mean = self.values.iter().map(|&v| v as f64).sum::<f64>() / n;
+        let var = self
+            .values
+            .iter()
+            .map(|&v| (v as f64 - mean).powi(2))
+            .sum::<f64>()
+            / n;
+        (self.mean, self.std_dev) = (mean as f32, var.sqrt() as f32);
+        // Colours: mean ± 3σ spans the palette (a constant frame is mid-grey).
+        let scale = if self.std_dev > 0.0 {
+            1.0 / (6.0 * self.std_dev)
+        } else {
+            0.0
+        };
+        self.histogram.iter_mut().for_each(|b| *b = 0);
+        for (v, px) in self.values.iter().zip(self.rgba.chunks_mut(4)) {
+            let z = (v - self.mean) * scale; // in units of 6σ
+            let [r, g, b] = color(0.5 + z, params.marble);
+            px[..3].copy_from_slice(&[r, g, b]);
+            let bin = ((z * 6.0 + 4.0) / 8.0 * HISTOGRAM_BINS as f32).floor();
+            if (0.0..HISTOGRAM_BINS as f32).contains(&bin) {
+                self.histogram[bin as usize] += 1;
+            }
+        }
+    }
+
+    /// Draws the frame on `ctx` at (0, 0).
+    ///
+    /// # Errors
+    ///
+    /// The canvas's own error if it refuses the image.
+    pub fn draw(&self, ctx: &CanvasRenderingContext2d) -> Result<(), JsValue> {
+        let image = ImageData::new_with_u8_clamped_array_and_sh(
+            Clamped(&self.rgba),
+            self.size as u32,
+            self.size as u32,
+        )?;
+        ctx.put_image_data(&image, 0.0, 0.0)
+    }
+
+    /// Computes the frame's power spectrum (log magnitude, DC centred) and draws it on `ctx`.
+    ///
+    /// # Errors
+    ///
+    /// The canvas's own error if it refuses the image.
+    pub fn draw_spectrum(&mut self, ctx: &CanvasRenderingContext2d) -> Result<(), JsValue> {
+        log_spectrum(&self.values, self.size, &mut self.spectrum);
+        for (s, px) in self.spectrum.iter().zip(self.spectrum_rgba.chunks_mut(4)) {
+            px[..3].copy_from_slice(&[*s, *s, *s]);
+        }
+        let image = ImageData::new_with_u8_clamped_array_and_sh(
+            Clamped(&self.spectrum_rgba),
+            self.size as u32,
+            self.size as u32,
+        )?;
+        ctx.put_image_data(&image, 0.0, 0.0)
+    }
+
+    /// The histogram of the frame's values, standardised, in [`HISTOGRAM_BINS`] bins over
+    /// `[-4σ, 4σ]`.
+    pub fn histogram(&self) -> Vec<u32> {
+        self.histogram.clone()
+    }
+
+    /// The frame's mean value.
+    pub fn mean(&self) -> f32 {
+        self.mean
+    }
+
+    /// The frame's standard deviation.
+    pub fn std_dev(&self) -> f32 {
+        self.std_dev
+    }
+
+    /// Samples per frame.
+    pub fn samples(&self) -> u32 {
+        self.values.len() as u32
+    }
+
+    /// The spectrum as computed by the last [`draw_spectrum`](Self::draw_spectrum).
+    pub fn spectrum(&self) -> Vec<u8> {
+        self.spectrum.clone()
+    }
+}
+
+/// Sums `count` samples of a 2D noise over a grid (for the browser benchmark; the sum keeps the
+/// work from being optimised away). `kind`: `perlin`, `mnoise` or `wavelet` (one band).
+///
+/// # Errors
+///
+/// A message for an unknown kind.
+#[wasm_bindgen]
+pub fn bench_sum(kind: &str, count: u32) -> Result<f64, JsValue> {
+    let side = 256u32;
+    let sum = |f: &dyn Fn([f32; 2]) -> f32| -> f64 {
+        let mut acc = 0.0f64;
+        for k in 0..count {
+            let (i, j) = (k % side, k / side % side);
+            acc += f([i as f32 * 0.0625, j as f32 * 0.0625]) as f64;
+        }
+        acc
+    };
+    match kind {
+        "perlin" => {
+            let n = Perlin::new(0);
+            Ok(sum(&|p| n.sample(p)))
+        }
+        "mnoise" => {
+            let n = MNoise::<61>::new(0);
+            Ok(sum(&|p| n.sample(p)))
+        }
+        "wavelet" => {
+            let n = Wavelet::new(&TILE2_I16, 0);
+            Ok(sum(&|p| n.sample(p)))
+        }
+        _ => Err(JsValue::from_str(&format!(
+            "unknown benchmark kind {kind:?}"
+        ))),
+    }
+}

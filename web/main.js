@@ -1,0 +1,146 @@
+// The bandnoise demo page: controls → wasm Params → Demo.render → canvases.
+import init, { Demo, Params } from './pkg/bandnoise_wasm.js';
+
+const SIZE = 256;
+const $ = (id) => document.getElementById(id);
+const state = {
+  pan: [0, 0],
+  bandWeights: [0, 0, 0.2, 0.5, 1, 0.5, 0.25, 0.12], // bands -3..4
+  renders: 0,
+  lastError: '',
+};
+window.bandnoise = state; // for the end-to-end test
+
+function number(id) {
+  const text = $(id).value.trim();
+  // Empty stays NaN so the wasm side reports the field by name.
+  return text === '' ? NaN : Number(text);
+}
+
+function params() {
+  return new Params(
+    $('kind').value, $('number').value, number('seed'), number('zoom'),
+    state.pan[0], state.pan[1], number('time'), $('fractal').value,
+    number('octaves'), number('lacunarity'), number('gain'),
+    new Float32Array(state.bandWeights), $('distribution').value,
+    $('projected').checked, $('palette').value,
+  );
+}
+
+function drawHistogram(demo) {
+  const ctx = $('histogram').getContext('2d');
+  const bins = demo.histogram();
+  const w = ctx.canvas.width, h = ctx.canvas.height;
+  ctx.clearRect(0, 0, w, h);
+  const total = bins.reduce((a, b) => a + b, 0) || 1;
+  const binWidth = 8 / bins.length; // bins span [-4σ, 4σ]
+  const density = Array.from(bins, (b) => b / total / binWidth);
+  const peak = Math.max(0.45, ...density);
+  ctx.fillStyle = '#9bb4e8';
+  density.forEach((d, i) => {
+    const bh = (d / peak) * (h - 4);
+    ctx.fillRect((i * w) / bins.length, h - bh, w / bins.length - 1, bh);
+  });
+  ctx.strokeStyle = '#c0392b';
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  for (let x = 0; x <= w; x++) {
+    const z = (x / w) * 8 - 4;
+    const y = h - (Math.exp(-z * z / 2) / Math.sqrt(2 * Math.PI) / peak) * (h - 4);
+    x === 0 ? ctx.moveTo(x, y) : ctx.lineTo(x, y);
+  }
+  ctx.stroke();
+}
+
+function drawBands() {
+  const box = $('bands');
+  box.replaceChildren();
+  state.bandWeights.forEach((wgt, i) => {
+    const bar = document.createElement('div');
+    bar.className = 'band';
+    bar.dataset.band = String(i);
+    bar.style.height = `${Math.max(1, wgt * 100)}px`;
+    bar.title = `band ${i - 3}: weight ${wgt.toFixed(2)}`;
+    box.appendChild(bar);
+  });
+}
+
+let demo;
+function render() {
+  let p;
+  try {
+    p = params();
+  } catch (e) {
+    state.lastError = String(e);
+    $('message').textContent = state.lastError;
+    return false;
+  }
+  const t0 = performance.now();
+  demo.render(p);
+  demo.draw($('noise').getContext('2d'));
+  const t1 = performance.now();
+  demo.draw_spectrum($('spectrum').getContext('2d'));
+  drawHistogram(demo);
+  p.free();
+  const ms = t1 - t0;
+  $('readout').textContent =
+    `${ms.toFixed(1)} ms per frame, ${(demo.samples() / ms / 1000).toFixed(1)} Msamples/s ` +
+    `(mean ${demo.mean().toFixed(3)}, σ ${demo.std_dev().toFixed(3)})`;
+  $('message').textContent = '';
+  state.lastError = '';
+  state.renders++;
+  return true;
+}
+
+function bandFromEvent(e) {
+  const box = $('bands').getBoundingClientRect();
+  const i = Math.floor(((e.clientX - box.left) / box.width) * state.bandWeights.length);
+  const weight = Math.min(1, Math.max(0, (box.bottom - e.clientY) / 100));
+  return [i, weight];
+}
+
+function wire() {
+  $('controls').addEventListener('input', render);
+  $('controls').addEventListener('change', render);
+  let dragging = null;
+  const canvas = $('noise');
+  canvas.addEventListener('pointerdown', (e) => { dragging = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
+  canvas.addEventListener('pointermove', (e) => {
+    if (!dragging) return;
+    const zoom = number('zoom') * 2; // the canvas is shown at twice its size
+    if (!(zoom > 0)) return;
+    state.pan[0] -= (e.clientX - dragging[0]) / zoom;
+    state.pan[1] -= (e.clientY - dragging[1]) / zoom;
+    dragging = [e.clientX, e.clientY];
+    render();
+  });
+  canvas.addEventListener('pointerup', () => { dragging = null; });
+  canvas.addEventListener('wheel', (e) => {
+    e.preventDefault();
+    const zoom = number('zoom');
+    if (zoom > 0) { $('zoom').value = String(+(zoom * Math.exp(-e.deltaY / 500)).toPrecision(4)); render(); }
+  }, { passive: false });
+  let bandDrag = false;
+  const setBand = (e) => {
+    const [i, w] = bandFromEvent(e);
+    if (i >= 0 && i < state.bandWeights.length) { state.bandWeights[i] = w; drawBands(); render(); }
+  };
+  $('bands').addEventListener('pointerdown', (e) => { bandDrag = true; $('bands').setPointerCapture(e.pointerId); setBand(e); });
+  $('bands').addEventListener('pointermove', (e) => { if (bandDrag) setBand(e); });
+  $('bands').addEventListener('pointerup', () => { bandDrag = false; });
+  const tick = () => {
+    if ($('animate').checked) {
+      $('time').value = (number('time') + 0.05).toFixed(2);
+      render();
+    }
+    requestAnimationFrame(tick);
+  };
+  requestAnimationFrame(tick);
+}
+
+await init();
+demo = new Demo(SIZE);
+drawBands();
+wire();
+render();
+state.ready = true;
