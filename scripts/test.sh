@@ -42,6 +42,29 @@ bash scripts/build-web.sh
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
 node tests/e2e/demo.test.mjs
 
+step "firmware under QEMU: the host's checksums on Cortex-M0, Cortex-M4F and RV32IMC"
+if ! command -v qemu-system-arm >/dev/null || ! command -v qemu-system-riscv32 >/dev/null; then
+    apt-get update
+    # This machine kind ships qemu-utils from bookworm-backports, which breaks the plain
+    # bookworm qemu-system packages: take them from backports too when the plain install fails.
+    if ! apt-get install -y qemu-system-arm qemu-system-misc; then
+        if ! grep -rqs bookworm-backports /etc/apt/sources.list /etc/apt/sources.list.d/; then
+            printf '%s\n' 'Types: deb' 'URIs: http://deb.debian.org/debian' 'Suites: bookworm-backports' \
+                'Components: main' 'Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg' \
+                > /etc/apt/sources.list.d/bookworm-backports.sources
+            apt-get update
+        fi
+        apt-get install -y -t bookworm-backports qemu-system-arm qemu-system-misc
+    fi
+fi
+(
+    cd firmware
+    cargo fmt --all -- --check
+    cargo run --release -p firmware-cortex-m --bin checks --target thumbv6m-none-eabi
+    cargo run --release -p firmware-cortex-m --bin checks --target thumbv7em-none-eabihf
+    cargo run --release -p firmware-riscv --bin checks --target riscv32imc-unknown-none-elf
+)
+
 step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png
