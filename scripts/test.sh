@@ -63,6 +63,11 @@ fi
     cargo run --release -p firmware-cortex-m --bin checks --target thumbv6m-none-eabi
     cargo run --release -p firmware-cortex-m --bin checks --target thumbv7em-none-eabihf
     cargo run --release -p firmware-riscv --bin checks --target riscv32imc-unknown-none-elf
+    # The LED-strip example: 100 frames of fire, checksum equal to the host's.
+    cargo run --release -p firmware-cortex-m --bin led --target thumbv6m-none-eabi
+    cargo run --release -p firmware-cortex-m --bin led --target thumbv7em-none-eabihf
+    # No reachable panic: the link fails if any panic survives in the noises it samples.
+    cargo build --release -p firmware-cortex-m --bin nopanic --target thumbv7em-none-eabihf
 )
 
 step "gallery renders"

@@ -7,6 +7,8 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod led;
+
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};

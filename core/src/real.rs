@@ -294,10 +294,13 @@ impl Real for I16F16 {
 
     #[inline]
     fn from_f32(v: f32) -> Self {
-        if v.is_nan() {
-            I16F16::ZERO
-        } else {
-            I16F16::saturating_from_num(v)
+        // `checked_from_num` has no panic path (unlike `saturating_from_num`, which panics on
+        // NaN): out of range saturates, NaN becomes 0.
+        match I16F16::checked_from_num(v) {
+            Some(x) => x,
+            None if v > 0.0 => I16F16::MAX,
+            None if v < 0.0 => I16F16::MIN,
+            None => I16F16::ZERO,
         }
     }
     #[inline]

@@ -1,5 +1,8 @@
-//! Puts `memory.x` on the linker path and computes the expected checksums on the host.
+//! Puts `memory.x` on the linker path and computes the expected values on the host.
 use std::{env, fs, path::PathBuf};
+
+/// Frames the LED example renders (2 s at 50 frames per second).
+const LED_FRAMES: u32 = 100;
 
 fn main() {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
@@ -8,13 +11,18 @@ fn main() {
     println!("cargo:rerun-if-changed=memory.x");
     // This runs on the host: these are the host's numbers the firmware must reproduce.
     let sums = bandnoise_checks::checksums();
-    fs::write(
-        out.join("expected.rs"),
-        format!(
-            "/// Computed on the host by build.rs.\nconst EXPECTED: [u32; {}] = {:?};\n",
-            sums.len(),
-            sums
-        ),
-    )
-    .expect("expected.rs");
+    let led = bandnoise_checks::led::checksum(LED_FRAMES);
+    let code = format!(
+        "/// Computed on the host by build.rs.\n\
+         #[allow(dead_code)]\n\
+         const EXPECTED: [u32; {}] = {sums:?};\n\
+         /// Frames of the LED example.\n\
+         #[allow(dead_code)]\n\
+         const LED_FRAMES: u32 = {LED_FRAMES};\n\
+         /// The LED example's checksum over those frames, on the host.\n\
+         #[allow(dead_code)]\n\
+         const LED_EXPECTED: u32 = {led};\n",
+        sums.len()
+    );
+    fs::write(out.join("expected.rs"), code).expect("expected.rs");
 }

@@ -35,7 +35,8 @@ pub(crate) fn octaves_for<R: Real>(len2: R, max: u32) -> Clamp<R> {
     let n = (-R::ONE - half * len2.log2()).clamp_to(R::ZERO, max_r);
     let n = if len2.is_nan() { max_r } else { n };
     let (full, frac) = n.split();
-    let full = full.clamp(0, max as i32) as u32;
+    // max(0).min(..), not clamp: clamp asserts its bounds, a panic path (firmware/nopanic).
+    let full = (full.max(0) as u32).min(max);
     if full >= max {
         return Clamp {
             full: max,

@@ -33,11 +33,12 @@ impl<const N: usize> TileData<2> for Tile2<N> {
     const SIZE: usize = N;
     #[inline]
     fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
-        R::from_f32(self.data[y][x])
+        self.flat(x + N * y)
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_f32(self.data.as_flattened()[index])
+        // In range by construction; `get` keeps sampling provably panic-free.
+        R::from_f32(self.data.as_flattened().get(index).copied().unwrap_or(0.0))
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -48,11 +49,13 @@ impl<const N: usize> TileData<3> for Tile3<N> {
     const SIZE: usize = N;
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
-        R::from_f32(self.data[z][y][x])
+        self.flat(x + N * (y + N * z))
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_f32(self.data.as_flattened().as_flattened()[index])
+        // In range by construction; `get` keeps sampling provably panic-free.
+        let coefficients = self.data.as_flattened().as_flattened();
+        R::from_f32(coefficients.get(index).copied().unwrap_or(0.0))
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -281,22 +284,26 @@ impl<'t, T> Wavelet<'t, T> {
         let mut m = crossing;
         loop {
             let off = axis_offsets(variant(m));
-            let range = |a: usize| {
-                if m >> a & 1 == 1 {
-                    split[a]..3
-                } else {
-                    0..split[a]
+            // Coefficient j along axis a belongs to this block when it is on the block's side
+            // of the split (loops run over 0..3 so every index is provably in range).
+            let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
+            let planes = if D == 3 { 3 } else { 1 };
+            for jz in 0..planes {
+                if D == 3 && !mine(D - 1, jz) {
+                    continue;
                 }
-            };
-            let planes = if D == 3 { range(2) } else { 0..1 };
-            for jz in planes {
                 let zoff = if D == 3 { off[D - 1][jz] } else { 0 };
                 let mut plane = R::ZERO;
-                for jy in range(1) {
+                for jy in 0..3 {
+                    if !mine(1, jy) {
+                        continue;
+                    }
                     let base = zoff + off[1][jy];
                     let mut row = R::ZERO;
-                    for jx in range(0) {
-                        row = row + weights[0][jx].mul_rn(self.tile.flat(base + off[0][jx]));
+                    for jx in 0..3 {
+                        if mine(0, jx) {
+                            row = row + weights[0][jx].mul_rn(self.tile.flat(base + off[0][jx]));
+                        }
                     }
                     plane = plane + weights[1][jy].mul_rn(row);
                 }

@@ -128,11 +128,13 @@ impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     const SIZE: usize = N;
     #[inline]
     fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
-        R::from_ratio(self.data[y][x] as i32, self.shift)
+        self.flat(x + N * y)
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(self.data.as_flattened()[index] as i32, self.shift)
+        // In range by construction; `get` keeps sampling provably panic-free.
+        let q = self.data.as_flattened().get(index).copied().unwrap_or(0);
+        R::from_ratio(q as i32, self.shift)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -143,14 +145,19 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     const SIZE: usize = N;
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
-        R::from_ratio(self.data[z][y][x] as i32, self.shift)
+        self.flat(x + N * (y + N * z))
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(
-            self.data.as_flattened().as_flattened()[index] as i32,
-            self.shift,
-        )
+        // In range by construction; `get` keeps sampling provably panic-free.
+        let q = self
+            .data
+            .as_flattened()
+            .as_flattened()
+            .get(index)
+            .copied()
+            .unwrap_or(0);
+        R::from_ratio(q as i32, self.shift)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
