@@ -69,6 +69,7 @@ fi
     # No reachable panic: the link fails if any panic survives in the noises it samples.
     cargo build --release -p firmware-cortex-m --bin nopanic --target thumbv7em-none-eabihf
 )
+bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
 
 step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke

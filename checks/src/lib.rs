@@ -7,6 +7,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod count;
 pub mod led;
 
 use bandnoise::fractal::{Fractal, Octaves};

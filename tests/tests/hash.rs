@@ -96,6 +96,21 @@ fn bbs_small_modulus_and_reduction() {
 }
 
 #[test]
+fn the_reciprocal_reduction_is_exact_for_every_argument() {
+    // The moduli the kernels use, both edges of the reciprocal's range (1024 uses it, 1031
+    // falls back to %), powers of two (the tightest case) and small ones.
+    assert!(Bbs::<61>::step_is_exact());
+    assert!(Bbs::<2>::step_is_exact());
+    assert!(Bbs::<3>::step_is_exact());
+    assert!(Bbs::<64>::step_is_exact());
+    assert!(Bbs::<257>::step_is_exact());
+    assert!(Bbs::<1021>::step_is_exact());
+    assert!(Bbs::<1024>::step_is_exact());
+    assert!(Bbs::<1031>::step_is_exact());
+    assert!(Bbs::<4093>::step_is_exact());
+}
+
+#[test]
 fn chained_hashes_follow_olanos_formula() {
     type H = Bbs<61>;
     let h = |x: i64| reference(x, 61);

@@ -44,6 +44,37 @@ impl<const M: u32> Bbs<M> {
         x.rem_euclid(M as i32) as u32
     }
 
+    /// `ceil(log2(M))`.
+    const BITS: u32 = u32::BITS - (M - 1).leading_zeros();
+    /// Whether [`Self::mod_square`] can use a 32-bit reciprocal: with `s = 31 − BITS`, it needs
+    /// `2^s ≥ M²` (error below one), i.e. `3·BITS ≤ 31`; then `v·⌈2^s/M⌉ ≤ M·2^s + M² < 2^32`.
+    const RECIPROCAL: bool = 3 * Self::BITS <= 31;
+    /// The shift and the reciprocal `ceil(2^s / M)`.
+    const SHIFT: u32 = 31 - Self::BITS;
+    const MAGIC: u32 = if Self::RECIPROCAL {
+        ((1u64 << Self::SHIFT) as u32).div_ceil(M)
+    } else {
+        0
+    };
+
+    /// `v mod M` for `v ≤ M²` (a square of a reduced value).
+    ///
+    /// For `M ≤ 1024` (61 included): `q = (v · ⌈2^s/M⌉) >> s` is `⌊v/M⌋` or one more, because
+    /// the reciprocal's error times `v < M² ≤ 2^s` stays below 1; one correction makes it exact.
+    /// A 32-bit multiply replaces a division: chips without a divider (Cortex-M0) save most.
+    /// Exhaustively tested against `%` (`tests/tests/hash.rs`).
+    #[inline]
+    #[must_use]
+    const fn mod_square(v: u32) -> u32 {
+        if Self::RECIPROCAL {
+            let q = (v * Self::MAGIC) >> Self::SHIFT;
+            let r = v.wrapping_sub(q * M);
+            if r > v { r.wrapping_add(M) } else { r }
+        } else {
+            v % M
+        }
+    }
+
     /// One step of the hash for an argument in `0..=2M`: `(x mod M)² mod M`.
     /// The chains only ever add a reduced cell (at most `M` for the upper corner) to a previous
     /// hash (below `M`), so one conditional subtraction replaces the first division.
@@ -54,7 +85,15 @@ impl<const M: u32> Bbs<M> {
         debug_assert!(x <= 2 * M);
         // r may equal M when x = 2M; M² mod M = 0 = (2M mod M)², so the result is still exact.
         let r = if x >= M { x - M } else { x };
-        (r * r) % M
+        Self::mod_square(r * r)
+    }
+
+    /// `step` for every argument in `0..=2M`, against `%`: true when they all agree.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn step_is_exact() -> bool {
+        (0..=2 * M).all(|x| Self::step(x) == (x % M) * (x % M) % M)
+            && (0..=M * M).all(|v| Self::mod_square(v) == v % M)
     }
 
     /// `(x mod M)² mod M`, with `x` reduced into `0..M` before squaring so nothing overflows.

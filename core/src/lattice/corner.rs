@@ -112,8 +112,10 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let mut cells = [0u32; D];
         for a in 0..D {
-            // In 0..M, so `c + 1 + h` below stays under 2M + 1.
-            cells[a] = (Bbs::<M>::reduce(cell[a]) + self.offset[a]) % M;
+            // Both in 0..M: one conditional subtraction reduces the sum. The result is in 0..M,
+            // so `c + 1 + h` in the chain stays within 2M.
+            let c = Bbs::<M>::reduce(cell[a]) + self.offset[a];
+            cells[a] = if c >= M { c - M } else { c };
         }
         hash_corners_last_first(cells, self.inner[D - 1], |h, c| Bbs::<M>::step(h + c))
     }

@@ -1,0 +1,61 @@
+//! The workloads of `scripts/count-instructions.sh`: each runs [`SAMPLES`] samples of one noise
+//! between two marker calls, so QEMU's instruction trace can count what one sample costs.
+
+use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::wavelet::{TILE2_I16, Wavelet};
+use bandnoise::{I16F16, Noise, Real};
+
+/// Samples per workload.
+pub const SAMPLES: u32 = 16;
+
+/// The workloads, in the order [`run`] executes them. The first is the baseline (the loop and
+/// the point, no noise), subtracted from the others.
+pub const NAMES: [&str; 9] = [
+    "baseline",
+    "mnoise 2D I16F16",
+    "mnoise 2D f32",
+    "perlin 2D I16F16",
+    "perlin 2D f32",
+    "perlin 3D I16F16",
+    "perlin 3D f32",
+    "wavelet 2D I16F16",
+    "wavelet 2D f32",
+];
+
+/// A point for sample `i`, away from the lattice.
+#[inline(always)]
+fn point<R: Real, const D: usize>(i: u32) -> [R; D] {
+    core::array::from_fn(|a| R::from_ratio((i * 40_503 + a as u32 * 21_011) as i32 & 0x7_FFFF, 16))
+}
+
+#[inline(always)]
+fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> R) -> u32 {
+    let mut acc = 0u32;
+    begin();
+    for i in 0..SAMPLES {
+        acc = acc.wrapping_add(
+            f(core::hint::black_box(point::<R, D>(i)))
+                .to_f32()
+                .to_bits(),
+        );
+    }
+    end();
+    acc
+}
+
+/// Runs every workload between `begin()` and `end()` (two distinct `#[inline(never)]` functions
+/// of the firmware, which the trace recognises by name).
+pub fn run(begin: fn(), end: fn()) -> u32 {
+    let (m, p) = (MNoise::<61>::new(1), Perlin::new(1));
+    let w = Wavelet::new(&TILE2_I16, 1);
+    let mut acc = workload::<I16F16, 2>(begin, end, |q| q[0] + q[1]);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| m.sample(q));
+    acc ^= workload::<f32, 2>(begin, end, |q| m.sample(q));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| p.sample(q));
+    acc ^= workload::<f32, 2>(begin, end, |q| p.sample(q));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| p.sample(q));
+    acc ^= workload::<f32, 3>(begin, end, |q| p.sample(q));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| w.sample(q));
+    acc ^= workload::<f32, 2>(begin, end, |q| w.sample(q));
+    acc
+}

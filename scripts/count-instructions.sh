@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Instructions per sample of 2D mNoise, 2D and 3D Perlin and 2D wavelet noise, in I16F16 and
+# f32, on Cortex-M0 (soft float), Cortex-M4F and RV32IMC, counted in QEMU's instruction trace
+# (deterministic, unlike time). Also the footprint of the LED example and of a minimal firmware
+# that calls only fixed-point 2D mNoise. Needs QEMU (scripts/test.sh installs it).
+set -euo pipefail
+cd "$(dirname "$0")/../firmware"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+names=(baseline "mnoise 2D I16F16" "mnoise 2D f32" "perlin 2D I16F16" "perlin 2D f32"
+    "perlin 3D I16F16" "perlin 3D f32" "wavelet 2D I16F16" "wavelet 2D f32")
+samples=16
+trace="-accel tcg,one-insn-per-tb=on -d exec,nochain -D $work/exec.log"
+
+cargo build -q --release -p firmware-cortex-m --bin count --target thumbv6m-none-eabi
+cargo build -q --release -p firmware-cortex-m --bin count --target thumbv7em-none-eabihf
+cargo build -q --release -p firmware-riscv --bin count --target riscv32imc-unknown-none-elf
+
+run() { # target, qemu command...
+    local target=$1; shift
+    timeout 300 "$@" $trace -kernel "target/$target/release/count" >/dev/null
+    python3 ../scripts/count-instructions.py "$work/exec.log" "$samples" "${names[@]}" > "$work/$target.tsv"
+    rm -f "$work/exec.log"
+}
+run thumbv6m-none-eabi qemu-system-arm -cpu cortex-m0 -machine microbit -nographic \
+    -semihosting-config enable=on,target=native
+run thumbv7em-none-eabihf qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
+    -semihosting-config enable=on,target=native
+run riscv32imc-unknown-none-elf qemu-system-riscv32 -machine virt \
+    -cpu rv32,a=false,f=false,d=false,zawrs=false,zfa=false -bios none -nographic
+
+echo "instructions per sample (QEMU trace, $samples samples, baseline subtracted)"
+printf '%-20s %16s %16s %16s\n' "" "Cortex-M0" "Cortex-M4F" "RV32IMC"
+paste "$work/thumbv6m-none-eabi.tsv" "$work/thumbv7em-none-eabihf.tsv" "$work/riscv32imc-unknown-none-elf.tsv" |
+    awk -F'\t' '{ printf "%-20s %16s %16s %16s\n", $1, $2, $4, $6 }'
+python3 - "$work/thumbv6m-none-eabi.tsv" <<'PY'
+import sys
+rows = dict(line.rstrip("\n").split("\t") for line in open(sys.argv[1]))
+fixed, flt = float(rows["mnoise 2D I16F16"]), float(rows["mnoise 2D f32"])
+ratio = fixed / flt
+print(f"Cortex-M0: fixed-point 2D mNoise takes {ratio:.2f} of the instructions of soft-float f32 (goal: at most 0.20)")
+sys.exit(0 if ratio <= 0.20 else "goal missed")
+PY
+
+# Footprint: flash and RAM from the ELF section headers.
+cargo build -q --release -p firmware-cortex-m --bin empty --bin minimal --bin led --target thumbv6m-none-eabi
+echo
+echo "footprint on thumbv6m (bytes)"
+python3 ../scripts/elf-size.py target/thumbv6m-none-eabi/release/{empty,minimal,led} | tee "$work/size.txt"
+added=$(awk '/^minimal adds/ { print $3 }' "$work/size.txt")
+if [ "$added" -gt 4096 ]; then
+    echo "the minimal firmware adds $added bytes of flash (goal: at most 4096)"
+    exit 1
+fi
