@@ -71,6 +71,22 @@ fi
 )
 bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
 
+step "fuzzing: every target for 20 s (pinned nightly, cargo-fuzz)"
+rustup toolchain install nightly-2026-05-20 --profile minimal # instant when present
+if ! cargo fuzz --version >/dev/null 2>&1; then
+    cargo install cargo-fuzz --version 0.13.1
+fi
+(
+    cd fuzz
+    cargo fmt --all -- --check
+    for target in hash lattice wavelet fractal; do
+        # New inputs go to a scratch corpus; the committed seeds stay as they are.
+        mkdir -p "../target/fuzz-corpus/$target"
+        cargo +nightly-2026-05-20 fuzz run "$target" "../target/fuzz-corpus/$target" "corpus/$target" \
+            -- -max_total_time=20
+    done
+)
+
 step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png

@@ -49,6 +49,11 @@ pub trait Noise<R: Real, const D: usize> {
 /// ```
 pub trait NoiseGradient<R: Real, const D: usize>: Noise<R, D> {
     /// The value at `p` (bit-identical to [`Noise::sample`]) and `∂noise/∂p`.
+    ///
+    /// # Contract
+    ///
+    /// As [`Noise::sample`] for the value; the gradient is finite for every input (a
+    /// non-finite coordinate is 0, where the gradient is that of the origin) and never panics.
     #[must_use]
     fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]);
 }

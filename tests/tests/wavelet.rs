@@ -444,3 +444,40 @@ fn default_tiles_have_the_documented_sizes() {
         assert!(*bytes >= coefficients && *bytes <= coefficients + 16);
     }
 }
+
+/// Regression: found by the fuzz target `wavelet` (artifact crash-9676ea98…): weights near
+/// 1e-23 underflowed Σw² in f32 and the normalisation blew up.
+#[test]
+fn tiny_and_huge_band_weights_normalise() {
+    for weights in [
+        [-2.6470584e-23f32, -1.594851e-23, 8.8e-44],
+        [1e6, 1e6, -1e6],
+        [1e-30, 0.0, 0.0],
+    ] {
+        let bands = Bands::new(-1, &weights).unwrap();
+        let m = Multiband::new(&TILE3_I16, 0, bands, Distribution::Gaussian);
+        let p = [f32::from_bits(4294966783), 0.37, 1.5];
+        let v: f32 = m.sample(p);
+        assert!(
+            v.is_finite() && v.abs() <= Noise::<f32, 3>::amplitude_bound(&m),
+            "{weights:?}: {v}"
+        );
+        let w = m.sample_projected(p, [0.0, 1.0, 0.0]);
+        assert!(w.is_finite() && w.abs() <= m.projected_bound());
+    }
+    // Scale does not matter: the normalised noise is the same for weights ×1e-20 and ×1.
+    let a = Multiband::new(
+        &TILE3_I16,
+        0,
+        Bands::new(0, &[1.0, 0.5]).unwrap(),
+        Distribution::Gaussian,
+    );
+    let b = Multiband::new(
+        &TILE3_I16,
+        0,
+        Bands::new(0, &[1e-20, 0.5e-20]).unwrap(),
+        Distribution::Gaussian,
+    );
+    let (x, y): (f32, f32) = (a.sample([0.3, 0.4, 0.5]), b.sample([0.3, 0.4, 0.5]));
+    assert!((x - y).abs() < 1e-6, "{x} vs {y}");
+}

@@ -249,6 +249,12 @@ impl<N, R: Real> Fractal<N, R> {
     /// above the limit add nothing.
     ///
     /// A zero or NaN footprint sums every octave; an infinite one none.
+    ///
+    /// # Contract
+    ///
+    /// Never panics, for any coordinates and footprints (NaN, ±∞, huge, fixed point's extremes:
+    /// octave frequencies wrap and sums saturate in fixed point); the result is finite in floats
+    /// and within [`amplitude_bound`](Noise::amplitude_bound).
     #[must_use]
     pub fn sample_filtered<const D: usize>(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R
     where

@@ -75,6 +75,10 @@ pub enum Tiling {
 
 /// One band of wavelet noise over a tile `T`, in 2D or 3D (the tile's dimension).
 ///
+/// Sampling follows the [`Noise`] contract: never panics; NaN and ±∞ coordinates are 0; cells
+/// beyond `i32` wrap; the result is finite, never `-0.0`, and within
+/// [`amplitude_bound`](Noise::amplitude_bound) (the tile's largest coefficient).
+///
 /// # Examples
 ///
 /// ```

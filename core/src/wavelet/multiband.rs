@@ -116,11 +116,6 @@ impl Bands {
     pub fn weights(&self) -> &[f32] {
         &self.weights
     }
-
-    /// `Σ w²`.
-    fn sum_of_squares(&self) -> f32 {
-        self.weights.iter().map(|w| w * w).sum()
-    }
 }
 
 impl Default for Bands {
@@ -196,15 +191,28 @@ impl<'t, T> Multiband<'t, T> {
     where
         T: TileVariance,
     {
-        let ss = bands.sum_of_squares();
+        // Normalise in f64 after dividing by the largest weight, so tiny or huge weights
+        // neither underflow nor overflow Σw² (found by the fuzz target `wavelet`).
+        let largest = bands
+            .weights()
+            .iter()
+            .fold(0.0f64, |m, w| m.max((*w as f64).abs()));
+        let ss: f64 = bands
+            .weights()
+            .iter()
+            .map(|w| {
+                let r = *w as f64 / largest;
+                r * r
+            })
+            .sum();
         // The tile's own exact band variance; projection scales it by the measured ratio.
-        let var = tile.band_variance();
-        let projected = var * (VARIANCE_PROJECTED / VARIANCE_3D);
+        let var = tile.band_variance() as f64;
+        let projected = var * (VARIANCE_PROJECTED / VARIANCE_3D) as f64;
         let mut scaled = Vec::new();
         for &w in bands.weights() {
-            let s = |var: f32| {
-                if ss > 0.0 && var > 0.0 {
-                    w / libm::sqrtf(var * ss)
+            let s = |var: f64| {
+                if largest > 0.0 && var > 0.0 {
+                    (w as f64 / largest / libm::sqrt(var * ss)) as f32
                 } else {
                     0.0
                 }
@@ -279,7 +287,14 @@ impl<'t, T> Multiband<'t, T> {
 
 impl<T: TileData<3>> Multiband<'_, T> {
     /// Multiband noise projected onto the surface through `p` with normal `normal` (§3.7): each
-    /// band is [`Wavelet::sample_projected`], normalised with [`VARIANCE_PROJECTED`].
+    /// band is [`Wavelet::sample_projected`], normalised with the tile's variance times the
+    /// projected-to-3D ratio.
+    ///
+    /// # Contract
+    ///
+    /// Never panics; coordinates and normals as [`Wavelet::sample_projected`]. The result is
+    /// finite and within [`projected_bound`](Self::projected_bound) (within `[-1, 1]` for
+    /// [`Distribution::Uniform`]); 0 when every band weight is 0.
     #[must_use]
     pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
         let n = super::projected::unit_normal(normal);

@@ -1,0 +1,56 @@
+//! Fractal sums with arbitrary octave counts, lacunarity, gain, coordinates and footprints:
+//! refused settings are errors; accepted ones never panic and stay within their bound.
+#![no_main]
+
+use arbitrary::Arbitrary;
+use bandnoise::fractal::{Fractal, Kind, Octaves};
+use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::{I16F16, Noise};
+use libfuzzer_sys::fuzz_target;
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    count: u32,
+    lacunarity: f32,
+    gain: f32,
+    kind: u8,
+    coords: [u32; 3],
+    dpdx: [u32; 3],
+    dpdy: [u32; 3],
+}
+
+fuzz_target!(|input: Input| {
+    let kind = [Kind::Fbm, Kind::Turbulence, Kind::Ridged][input.kind as usize % 3];
+    let p = input.coords.map(f32::from_bits);
+    let (dx, dy) = (
+        input.dpdx.map(f32::from_bits),
+        input.dpdy.map(f32::from_bits),
+    );
+    let q = input.coords.map(|b| I16F16::from_bits(b as i32));
+    let (qx, qy) = (
+        input.dpdx.map(|b| I16F16::from_bits(b as i32)),
+        input.dpdy.map(|b| I16F16::from_bits(b as i32)),
+    );
+    let Ok(octaves) = Octaves::<f32>::new(input.count, input.lacunarity, input.gain) else {
+        let (l, g) = (input.lacunarity, input.gain);
+        assert!(
+            input.count == 0
+                || input.count > 30
+                || !(l > 0.0 && l <= 16.0)
+                || !(-1.0..=1.0).contains(&g)
+        );
+        return;
+    };
+    let fixed =
+        Octaves::<I16F16>::new(input.count, input.lacunarity, input.gain).expect("same checks");
+    let f = Fractal::new(Perlin::new(1), octaves, kind);
+    let bound = Noise::<f32, 3>::amplitude_bound(&f);
+    for v in [f.sample(p), f.sample_filtered(p, dx, dy)] {
+        assert!(v.is_finite() && v.abs() <= bound, "{v} > {bound}");
+    }
+    let g = Fractal::new(MNoise::<61>::new(2), fixed, kind);
+    let gb = Noise::<I16F16, 3>::amplitude_bound(&g);
+    for v in [g.sample(q), g.sample_filtered(q, qx, qy)] {
+        assert!(v.to_num::<f32>().abs() <= gb, "{v} > {gb}");
+    }
+});
