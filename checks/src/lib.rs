@@ -167,6 +167,19 @@ pub const fn is_fixed(i: usize) -> bool {
     i < COUNT / 2
 }
 
+/// Compares [`checksums`] with `expected` (the host's), calling `report(number type, name,
+/// got, expected)` for each difference; returns how many differ.
+pub fn compare(expected: &[u32; COUNT], mut report: impl FnMut(&str, &str, u32, u32)) -> usize {
+    let mut differ = 0;
+    for (i, (g, e)) in checksums().iter().zip(expected).enumerate() {
+        if g != e {
+            differ += 1;
+            report(if is_fixed(i) { "I16F16" } else { "f32" }, NAMES[i], *g, *e);
+        }
+    }
+    differ
+}
+
 /// Every checksum: I16F16 first, then f32.
 pub fn checksums() -> [u32; COUNT] {
     let mut out = [0u32; COUNT];

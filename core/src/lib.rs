@@ -45,7 +45,7 @@
 //!
 //! # Guarantees
 //!
-//! * `#![no_std]`, no allocation, no `unsafe`.
+//! * `#![no_std]`, no allocation, `#![forbid(unsafe_code)]`.
 //! * Sampling is total: every input, NaN and infinities included, gives a documented value and
 //!   never a panic (see [`Noise`]).
 //! * `f32` and `f64` results use only IEEE `+ − × ÷` (and `libm` where more is needed), so they

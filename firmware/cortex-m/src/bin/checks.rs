@@ -5,7 +5,7 @@
 
 use core::panic::PanicInfo;
 
-use bandnoise_checks::{NAMES, checksums, is_fixed};
+use bandnoise_checks::{COUNT, compare};
 use cortex_m as _; // links the critical-section implementation
 use cortex_m_rt::entry;
 use cortex_m_semihosting::{debug, hprintln};
@@ -14,19 +14,13 @@ include!(concat!(env!("OUT_DIR"), "/expected.rs"));
 
 #[entry]
 fn main() -> ! {
-    let got = checksums();
-    let mut bad = 0;
-    for (i, (g, e)) in got.iter().zip(EXPECTED.iter()).enumerate() {
-        if g != e {
-            bad += 1;
-            let ty = if is_fixed(i) { "I16F16" } else { "f32" };
-            hprintln!("MISMATCH {} {}: {:08x}, host {:08x}", ty, NAMES[i], g, e);
-        }
-    }
+    let bad = compare(&EXPECTED, |ty, name, got, host| {
+        hprintln!("MISMATCH {} {}: {:08x}, host {:08x}", ty, name, got, host);
+    });
     hprintln!(
         "{}: {} checksums, {} differ from the host",
         TARGET,
-        got.len(),
+        COUNT,
         bad
     );
     debug::exit(if bad == 0 {

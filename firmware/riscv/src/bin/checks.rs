@@ -6,7 +6,7 @@
 use core::fmt::Write;
 use core::panic::PanicInfo;
 
-use bandnoise_checks::{NAMES, checksums, is_fixed};
+use bandnoise_checks::{COUNT, compare};
 
 include!(concat!(env!("OUT_DIR"), "/expected.rs"));
 
@@ -36,19 +36,12 @@ fn exit(success: bool) -> ! {
 
 #[riscv_rt::entry]
 fn main() -> ! {
-    let got = checksums();
-    let mut bad = 0;
-    for (i, (g, e)) in got.iter().zip(EXPECTED.iter()).enumerate() {
-        if g != e {
-            bad += 1;
-            let ty = if is_fixed(i) { "I16F16" } else { "f32" };
-            let _ = writeln!(Uart, "MISMATCH {ty} {}: {g:08x}, host {e:08x}", NAMES[i]);
-        }
-    }
+    let bad = compare(&EXPECTED, |ty, name, got, host| {
+        let _ = writeln!(Uart, "MISMATCH {ty} {name}: {got:08x}, host {host:08x}");
+    });
     let _ = writeln!(
         Uart,
-        "riscv32imc: {} checksums, {bad} differ from the host",
-        got.len()
+        "riscv32imc: {COUNT} checksums, {bad} differ from the host"
     );
     exit(bad == 0)
 }

@@ -1,4 +1,5 @@
-//! Puts `memory.x` on the linker path and computes the expected values on the host.
+//! Shared build script of the firmware crates: puts the crate's `memory.x` on the linker path
+//! and computes the expected values on the host.
 use std::{env, fs, path::PathBuf};
 
 /// Frames the LED example renders (2 s at 50 frames per second).
@@ -6,7 +7,8 @@ const LED_FRAMES: u32 = 100;
 
 fn main() {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
-    fs::write(out.join("memory.x"), include_bytes!("memory.x")).expect("memory.x");
+    let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
+    fs::copy(manifest.join("memory.x"), out.join("memory.x")).expect("memory.x");
     println!("cargo:rustc-link-search={}", out.display());
     println!("cargo:rerun-if-changed=memory.x");
     // This runs on the host: these are the host's numbers the firmware must reproduce.
