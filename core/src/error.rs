@@ -35,6 +35,14 @@ pub enum Error {
     },
     /// A first band outside `-24..=8` (frequencies from 2⁻²⁴ to 2⁸ cycles per unit).
     FirstBand(i32),
+    /// A batch output buffer (or a point slice) whose length does not match the points asked
+    /// for.
+    BufferLength {
+        /// The length required (`usize::MAX` for a grid whose size overflows `usize`).
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
 }
 
 impl fmt::Display for Error {
@@ -58,6 +66,9 @@ impl fmt::Display for Error {
                 )
             }
             Error::FirstBand(b) => write!(f, "first band {b} is outside -24..=8"),
+            Error::BufferLength { expected, found } => {
+                write!(f, "buffer of length {found} given, {expected} needed")
+            }
         }
     }
 }

@@ -1,6 +1,7 @@
 //! The sampling traits every noise implements.
 
-use crate::Real;
+use crate::batch::{self, Grid, LANES};
+use crate::{Error, Real};
 
 /// A scalar noise over `D`-dimensional space in the number type `R`.
 ///
@@ -35,6 +36,67 @@ pub trait Noise<R: Real, const D: usize> {
     /// each noise (so that fuzzers, tests and normalisations can rely on it).
     #[must_use]
     fn amplitude_bound(&self) -> f32;
+
+    /// Samples [`LANES`] points at once, given as structure of arrays: lane `l` is the point
+    /// `[p[0][l], p[1][l], …]`, its value goes to `out[l]`. Bit-identical to
+    /// [`sample`](Self::sample) lane by lane, with the same contract.
+    ///
+    /// The default evaluates lane by lane; the lattice noises and fractal sums override it with
+    /// kernels the compiler vectorises (see [`batch`](crate::batch)). Most code calls
+    /// [`fill_grid`](Self::fill_grid) or [`fill_points`](Self::fill_points) instead.
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        for (l, o) in out.iter_mut().enumerate() {
+            *o = self.sample(batch::lane(p, l));
+        }
+    }
+
+    /// Fills `out` with the noise over `grid`, row-major with axis 0 fastest: point
+    /// `[i, j, k]` goes to `out[i + size[0]·(j + size[1]·k)]`. Each value is bit-identical to
+    /// `self.sample(grid.point([i, j, k]))`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BufferLength`] unless `out.len() == grid.len()`; `out` is then left untouched.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::{Noise, batch::Grid, lattice::MNoise};
+    ///
+    /// let m = MNoise::<61>::new(3);
+    /// let grid = Grid::new([0.0f32, 0.0], [0.1, 0.1], [100, 10]);
+    /// let mut out = [0.0f32; 1000];
+    /// m.fill_grid(&grid, &mut out)?;
+    /// assert_eq!(out[2 * 100 + 7], m.sample(grid.point([7, 2])));
+    /// # Ok::<(), bandnoise::Error>(())
+    /// ```
+    fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
+        batch::fill_grid(self, grid, out)
+    }
+
+    /// Fills `out[i]` with the noise at `[points[0][i], points[1][i], …]` (one slice per axis,
+    /// structure of arrays), each value bit-identical to [`sample`](Self::sample) there.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::BufferLength`] unless every slice of `points` has `out.len()` elements.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::{Noise, lattice::Perlin};
+    ///
+    /// let xs = [0.5f32, 1.25, -3.0];
+    /// let ys = [0.1f32, 7.5, 2.0];
+    /// let mut out = [0.0f32; 3];
+    /// Perlin::new(0).fill_points([&xs, &ys], &mut out)?;
+    /// assert_eq!(out[1], Perlin::new(0).sample([1.25, 7.5]));
+    /// # Ok::<(), bandnoise::Error>(())
+    /// ```
+    fn fill_points(&self, points: [&[R]; D], out: &mut [R]) -> Result<(), Error> {
+        batch::fill_points(self, points, out)
+    }
 }
 
 /// A noise that also gives its analytic gradient.
@@ -65,6 +127,10 @@ impl<R: Real, const D: usize, N: Noise<R, D> + ?Sized> Noise<R, D> for &N {
     }
     fn amplitude_bound(&self) -> f32 {
         (**self).amplitude_bound()
+    }
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        (**self).sample_lanes(p, out);
     }
 }
 

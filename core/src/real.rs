@@ -92,6 +92,19 @@ pub trait Real:
     ///   hash; such floats are integers anyway, so the fraction is 0.
     fn split(self) -> (i32, Self);
 
+    /// [`split`](Self::split) of every lane, bit-identical to it, written so the compiler can
+    /// vectorise it (the batch paths of [`crate::batch`] use it).
+    #[inline]
+    fn split_lanes(
+        x: &[Self; crate::batch::LANES],
+        cell: &mut [i32; crate::batch::LANES],
+        frac: &mut [Self; crate::batch::LANES],
+    ) {
+        for l in 0..crate::batch::LANES {
+            (cell[l], frac[l]) = x[l].split();
+        }
+    }
+
     /// Absolute value (saturating at `MAX` for fixed point's most negative value).
     fn abs(self) -> Self;
     /// Addition that saturates at the type's range in fixed point (plain IEEE `+` for floats).
@@ -196,6 +209,31 @@ macro_rules! impl_real_float {
                 } else {
                     let (cell, frac) = split_far(self as f64);
                     (cell, frac as $t)
+                }
+            }
+            #[inline]
+            fn split_lanes(
+                x: &[Self; crate::batch::LANES],
+                cell: &mut [i32; crate::batch::LANES],
+                frac: &mut [Self; crate::batch::LANES],
+            ) {
+                // The in-range branch of `split`, with selects instead of branches, for all
+                // lanes at once when every lane is in range (the common case).
+                if x.iter()
+                    .all(|v| (-2_147_483_648.0..2_147_483_648.0).contains(v))
+                {
+                    for l in 0..crate::batch::LANES {
+                        let t = x[l] as i32;
+                        let c = t.wrapping_sub(((t as $t) > x[l]) as i32);
+                        let f = x[l] - c as $t;
+                        let up = f >= 1.0;
+                        cell[l] = c.wrapping_add(up as i32);
+                        frac[l] = if up { 0.0 } else { f + 0.0 };
+                    }
+                } else {
+                    for l in 0..crate::batch::LANES {
+                        (cell[l], frac[l]) = x[l].split();
+                    }
                 }
             }
             #[inline]

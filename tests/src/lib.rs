@@ -2,6 +2,7 @@
 //! can be replayed from the environment, an enum over every lattice noise so a test can loop over
 //! all of them, and small statistics.
 
+use bandnoise::batch::LANES;
 use bandnoise::prelude::*;
 
 /// SplitMix64, for test inputs.
@@ -131,6 +132,9 @@ where
     }
     fn amplitude_bound(&self) -> f32 {
         delegate!(self, n => Noise::<R, D>::amplitude_bound(n))
+    }
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        delegate!(self, n => n.sample_lanes(p, out))
     }
 }
 

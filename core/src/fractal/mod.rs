@@ -8,6 +8,7 @@
 
 mod footprint;
 
+use crate::batch::LANES;
 use crate::{Error, Noise, Real};
 use footprint::{footprint_len2, octaves_for};
 
@@ -192,10 +193,30 @@ impl<N, R: Real> Fractal<N, R> {
     where
         N: Noise<R, D>,
     {
-        let mut sum = R::ZERO;
+        let p = p.map(|x| [x]);
+        let [v] = self.sum_lanes(&p, full, partial, add_clamped, |q, n| {
+            n[0] = self.noise.sample(q.map(|[x]| x));
+        });
+        v
+    }
+
+    /// [`sum`](Self::sum) over `L` points at once (structure of arrays), with `eval` sampling
+    /// the noise at `L` points. The point path is this with `L = 1`, so the batch path is
+    /// bit-identical to it by construction. Each step runs over all lanes, with the branch on
+    /// the kind outside the lane loops.
+    fn sum_lanes<const L: usize, const D: usize>(
+        &self,
+        p: &[[R; L]; D],
+        full: u32,
+        partial: R,
+        add_clamped: bool,
+        mut eval: impl FnMut(&[[R; L]; D], &mut [R; L]),
+    ) -> [R; L] {
+        let mut sum = [R::ZERO; L];
         let mut frequency = R::ONE;
         let mut amplitude = R::ONE;
-        let mut weight = R::ONE;
+        let mut weight = [R::ONE; L];
+        let mut term = [R::ZERO; L];
         let last = if full < self.octaves.count {
             full + 1
         } else {
@@ -203,37 +224,43 @@ impl<N, R: Real> Fractal<N, R> {
         };
         for i in 0..last {
             // Wrapping in fixed point keeps the coordinate on the lattice; see Real::wrapping_mul.
-            let n = self.noise.sample(p.map(|x| x.wrapping_mul(frequency)));
-            let mut term = match self.kind {
-                Kind::Fbm => n,
-                Kind::Turbulence => n.abs(),
+            let q = p.map(|axis| axis.map(|x| x.wrapping_mul(frequency)));
+            eval(&q, &mut term);
+            match self.kind {
+                Kind::Fbm => {}
+                Kind::Turbulence => term = term.map(R::abs),
                 Kind::Ridged => {
-                    let r = R::ONE - n.abs();
-                    let r = r * r * weight;
-                    weight = (r + r).clamp_to(R::ZERO, R::ONE);
-                    r
+                    for (t, w) in term.iter_mut().zip(weight.iter_mut()) {
+                        let r = R::ONE - t.abs();
+                        let r = r * r * *w;
+                        *w = (r + r).clamp_to(R::ZERO, R::ONE);
+                        *t = r;
+                    }
                 }
-            };
+            }
             if i == full {
                 term = match self.kind {
                     // pbrt: Lerp(smoothstep, 0.2, |n|) = 0.2 + w·(|n| − 0.2).
                     Kind::Turbulence if add_clamped => {
-                        self.clamped_mean + partial * (term - self.clamped_mean)
+                        term.map(|t| self.clamped_mean + partial * (t - self.clamped_mean))
                     }
-                    _ => partial * term,
+                    _ => term.map(|t| partial * t),
                 };
             }
-            sum = sum.saturating_add(amplitude.saturating_mul(term));
+            for (s, t) in sum.iter_mut().zip(term) {
+                *s = s.saturating_add(amplitude.saturating_mul(t));
+            }
             frequency = frequency.saturating_mul(self.octaves.lacunarity);
             amplitude = amplitude.saturating_mul(self.octaves.gain);
         }
         if add_clamped && self.kind == Kind::Turbulence {
             for _ in last..self.octaves.count {
-                sum = sum.saturating_add(amplitude.saturating_mul(self.clamped_mean));
+                let mean = amplitude.saturating_mul(self.clamped_mean);
+                sum = sum.map(|s| s.saturating_add(mean));
                 amplitude = amplitude.saturating_mul(self.octaves.gain);
             }
         }
-        sum.canonical()
+        sum.map(R::canonical)
     }
 
     /// The anti-aliased sum for a sample whose footprint in noise space is spanned by `dpdx`
@@ -269,6 +296,13 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N, R> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         self.sum(p, self.octaves.count, R::ZERO, false)
+    }
+
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        *out = self.sum_lanes(p, self.octaves.count, R::ZERO, false, |q, n| {
+            self.noise.sample_lanes(q, n);
+        });
     }
 
     /// `Σ_i |gain|^i · B`, with `B` the noise's bound for fBm and turbulence and

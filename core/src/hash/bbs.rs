@@ -48,6 +48,30 @@ impl<const M: u32> Bbs<M> {
         x.rem_euclid(M as i32) as u32
     }
 
+    /// [`reduce`](Self::reduce) of every lane, equal to it for every input, vectorisable: while
+    /// every `|x| < 2²⁴ − 8192` the quotient comes from an `f32` division, floored by a
+    /// truncating cast and one correction, and the remainder is corrected once each way (the
+    /// same argument as [`reduce_f32`](Self::reduce_f32)); otherwise lane by lane with `%`.
+    /// Exhaustively tested against `reduce` over that range (`tests/tests/hash.rs`).
+    #[inline]
+    #[must_use]
+    pub fn reduce_lanes(x: &[i32; crate::batch::LANES]) -> [u32; crate::batch::LANES] {
+        let () = Self::VALID;
+        const FAST: i32 = 16_777_216 - 8192;
+        if x.iter().all(|&v| (-FAST..=FAST).contains(&v)) {
+            x.map(|v| {
+                let q = v as f32 / M as f32;
+                let t = q as i32;
+                let q = t - ((t as f32) > q) as i32;
+                let r = v - q * M as i32;
+                let r = if r < 0 { r + M as i32 } else { r };
+                (if r >= M as i32 { r - M as i32 } else { r }) as u32
+            })
+        } else {
+            x.map(Self::reduce)
+        }
+    }
+
     /// `ceil(log2(M))`.
     const BITS: u32 = u32::BITS - (M - 1).leading_zeros();
     /// Whether [`Self::mod_square`] can use a 32-bit reciprocal: with `s = 31 − BITS`, it needs

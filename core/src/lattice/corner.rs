@@ -10,6 +10,7 @@
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_last_first};
 use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
 use crate::Real;
+use crate::batch::LANES;
 use crate::hash::{Bbs, Permutation, seed::splitmix64};
 
 /// `Σ_a ±d_a` with the sign of axis `a` from bit `a` of `h`.
@@ -117,7 +118,22 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
             let c = Bbs::<M>::reduce(cell[a]) + self.offset[a];
             cells[a] = if c >= M { c - M } else { c };
         }
-        hash_corners_last_first(cells, self.inner[D - 1], |h, c| Bbs::<M>::step(h + c))
+        hash_corners_last_first(cells, self.inner[D - 1], |h, c, k| {
+            Bbs::<M>::step(h + c + k)
+        })
+    }
+    #[inline]
+    fn corner_hashes_lanes(&self, cell: &[[i32; LANES]; D]) -> [[u32; LANES]; MAX_CORNERS] {
+        let cells: [[u32; LANES]; D] = core::array::from_fn(|a| {
+            let r = Bbs::<M>::reduce_lanes(&cell[a]);
+            r.map(|r| {
+                let c = r + self.offset[a];
+                if c >= M { c - M } else { c }
+            })
+        });
+        hash_corners_last_first(cells, [self.inner[D - 1]; LANES], |h, c, k| {
+            core::array::from_fn(|l| Bbs::<M>::step(h[l] + c[l] + k))
+        })
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
@@ -183,7 +199,7 @@ impl<const D: usize> GradientLattice<D> for CNoise {
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let cells = cell.map(|c| (c & 255) as u32);
-        hash_corners_last_first(cells, self.inner[D - 1], |h, c| self.perm.get(h + c))
+        hash_corners_last_first(cells, self.inner[D - 1], |h, c, k| self.perm.get(h + c + k))
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {

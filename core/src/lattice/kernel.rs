@@ -101,20 +101,23 @@ pub(crate) fn hash_corners_x_first<const D: usize>(
 /// Hashes every corner of a cell with a chain that takes the last axis innermost:
 /// `h = step(…step(step(start, w), z)…, x)`, Olano's `hash(x + hash(y + hash(z)))` order, which
 /// makes a noise with the last coordinate 0 equal to the noise of one dimension less.
+///
+/// `step(h, c, k)` hashes `h` with the cell `c` plus `k` (0 for the lower corner, 1 for the
+/// upper). `T` is one hash (`u32`) or one per lane (`[u32; LANES]`), so the point and the batch
+/// kernels share this chain.
 #[inline]
-pub(crate) fn hash_corners_last_first<const D: usize>(
-    cells: [u32; D],
-    start: u32,
-    step: impl Fn(u32, u32) -> u32,
-) -> [u32; MAX_CORNERS] {
-    let mut h = [0u32; MAX_CORNERS];
-    h[0] = start;
+pub(crate) fn hash_corners_last_first<T: Copy, const D: usize>(
+    cells: [T; D],
+    start: T,
+    step: impl Fn(T, T, u32) -> T,
+) -> [T; MAX_CORNERS] {
+    let mut h = [start; MAX_CORNERS];
     for a in (0..D).rev() {
         let bit = 1 << a;
         for j in 0..(1 << (D - 1 - a)) {
             let m = j << (a + 1);
-            h[m | bit] = step(h[m], cells[a] + 1);
-            h[m] = step(h[m], cells[a]);
+            h[m | bit] = step(h[m], cells[a], 1);
+            h[m] = step(h[m], cells[a], 0);
         }
     }
     h

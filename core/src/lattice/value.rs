@@ -6,8 +6,10 @@
 //! better noises are compared against.
 
 use super::kernel::{
-    MAX_CORNERS, Quintic, fade_all, hash_corners_x_first, interpolate, split_point,
+    Fade, MAX_CORNERS, Quintic, fade_all, hash_corners_x_first, interpolate, split_point,
 };
+use super::{interpolate_lanes, split_lanes};
+use crate::batch::{LANES, lane};
 use crate::hash::Permutation;
 use crate::{Noise, Real};
 
@@ -64,5 +66,22 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
 
     fn amplitude_bound(&self) -> f32 {
         255.0 / 256.0 + super::ROUNDING
+    }
+
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        let (cell, f) = split_lanes(p);
+        let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
+        for l in 0..LANES {
+            let cells = lane(&cell, l).map(|c| (c & 255) as u32);
+            let h = hash_corners_x_first(cells, 0, |h, c| self.perm.get(h + c));
+            for m in 0..(1 << D) {
+                v[m][l] = R::from_ratio(2 * h[m] as i32 - 255, 8);
+            }
+        }
+        interpolate_lanes(&mut v, &f.map(|fa| fa.map(Quintic::fade)));
+        for l in 0..LANES {
+            out[l] = v[0][l].canonical();
+        }
     }
 }

@@ -1,0 +1,199 @@
+//! The batch API (`fill_grid`, `fill_points`, `sample_lanes`) is bit-identical to `sample` for
+//! every noise, number type and dimension, including the inputs that leave the vectorised
+//! paths (non-finite, huge, cells beyond 2²⁴), and refuses buffers of the wrong length.
+
+use bandnoise::Error;
+use bandnoise::batch::{Grid, LANES};
+use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::prelude::*;
+use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, TILE3_I16, Wavelet};
+use bandnoise_tests::{AllTypes, Lattice, Rng};
+
+/// The exact bits of a value of any of the three types (`to_f64` is exact for all three).
+fn bits<R: Real>(v: R) -> u64 {
+    v.to_f64().to_bits()
+}
+
+/// Coordinates that stress the split and hash paths: ordinary values, values next to cell
+/// boundaries, −0.0, cells beyond the f32-exact hash range, huge and non-finite values.
+fn coordinate(rng: &mut Rng) -> f32 {
+    match rng.next_u64() % 16 {
+        0 => f32::NAN,
+        1 => f32::INFINITY,
+        2 => f32::NEG_INFINITY,
+        3 => -0.0,
+        4 => -1e-30,
+        5 => rng.f64_in(-3e9, 3e9) as f32,
+        6 => rng.f64_in(-2e7, 2e7) as f32,
+        7 => rng.i32_in(-40_000, 40_000) as f32,
+        _ => rng.f64_in(-300.0, 300.0) as f32,
+    }
+}
+
+/// `fill_points` and `fill_grid` against `sample`, bit for bit.
+fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &mut Rng) {
+    // Points: 16 chunks, some entirely ordinary (the vectorised split), some with one special
+    // lane, and a short last chunk.
+    let count = 16 * LANES + 5;
+    let mut axes: [Vec<R>; D] = core::array::from_fn(|_| Vec::with_capacity(count));
+    for i in 0..count {
+        let special = (i / LANES) % 3 == 0;
+        for axis in &mut axes {
+            let x = if special {
+                coordinate(rng)
+            } else {
+                rng.f64_in(-300.0, 300.0) as f32
+            };
+            axis.push(R::from_f32(x));
+        }
+    }
+    let slices: [&[R]; D] = core::array::from_fn(|a| &axes[a][..]);
+    let mut out = vec![R::ZERO; count];
+    noise.fill_points(slices, &mut out).unwrap();
+    for (i, v) in out.iter().enumerate() {
+        let p: [R; D] = core::array::from_fn(|a| axes[a][i]);
+        assert_eq!(bits(*v), bits(noise.sample(p)), "{name} {D}D points: {p:?}");
+    }
+
+    // Grids: a row that is not a multiple of LANES, a row shorter than LANES, and a far origin.
+    for (size0, far) in [(37, false), (5, false), (LANES, true)] {
+        let size: [usize; D] = core::array::from_fn(|a| if a == 0 { size0 } else { 3 });
+        let origin = core::array::from_fn(|_| {
+            R::from_f32(if far {
+                coordinate(rng)
+            } else {
+                rng.f64_in(-100.0, 100.0) as f32
+            })
+        });
+        let step = core::array::from_fn(|_| R::from_f32(rng.f64_in(-0.7, 0.7) as f32));
+        let grid = Grid::new(origin, step, size);
+        let mut out = vec![R::ZERO; grid.len()];
+        noise.fill_grid(&grid, &mut out).unwrap();
+        let mut index = [0usize; D];
+        for v in &out {
+            let p = grid.point(index);
+            assert_eq!(
+                bits(*v),
+                bits(noise.sample(p)),
+                "{name} {D}D grid: {index:?} {p:?}"
+            );
+            for a in 0..D {
+                index[a] += 1;
+                if index[a] < size[a] {
+                    break;
+                }
+                index[a] = 0;
+            }
+        }
+    }
+}
+
+fn check_all_types<const D: usize, N: AllTypes<D>>(name: &str, noise: &N, rng: &mut Rng) {
+    check::<f32, D, N>(name, noise, rng);
+    check::<f64, D, N>(name, noise, rng);
+    check::<I16F16, D, N>(name, noise, rng);
+}
+
+#[test]
+fn lattice_noises_in_batch_equal_point_evaluation() {
+    let mut rng = Rng::from_env(71);
+    for seed in [0, 5] {
+        for (name, noise) in Lattice::all(seed) {
+            check_all_types::<1, _>(name, &noise, &mut rng);
+            check_all_types::<2, _>(name, &noise, &mut rng);
+            check_all_types::<3, _>(name, &noise, &mut rng);
+            check_all_types::<4, _>(name, &noise, &mut rng);
+        }
+    }
+}
+
+fn check_fractals<R: Real, const D: usize>(rng: &mut Rng)
+where
+    Perlin: Noise<R, D>,
+    MNoise<61>: Noise<R, D>,
+{
+    for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
+        let perlin = Fractal::new(Perlin::new(1), Octaves::new(6, 2.0, 0.5).unwrap(), kind);
+        check::<R, D, _>("fractal perlin", &perlin, rng);
+        let m = Fractal::new(
+            MNoise::<61>::new(2),
+            Octaves::new(4, 1.9, 0.6).unwrap(),
+            kind,
+        );
+        check::<R, D, _>("fractal mnoise", &m, rng);
+    }
+}
+
+#[test]
+fn fractal_sums_in_batch_equal_point_evaluation() {
+    let mut rng = Rng::from_env(72);
+    check_fractals::<f32, 2>(&mut rng);
+    check_fractals::<f32, 3>(&mut rng);
+    check_fractals::<f64, 3>(&mut rng);
+    check_fractals::<I16F16, 2>(&mut rng);
+    check_fractals::<I16F16, 3>(&mut rng);
+}
+
+#[test]
+fn wavelet_noise_in_batch_equals_point_evaluation() {
+    let mut rng = Rng::from_env(73);
+    check_all_types::<2, _>("wavelet", &Wavelet::new(&TILE2, 3), &mut rng);
+    check_all_types::<3, _>("wavelet", &Wavelet::new(&TILE3, 3), &mut rng);
+    check_all_types::<3, _>("wavelet i16", &Wavelet::new(&TILE3_I16, 3), &mut rng);
+    let multi = Multiband::new(&TILE3, 1, Bands::default(), Distribution::Uniform);
+    check_all_types::<3, _>("multiband", &multi, &mut rng);
+    let fbm = Fractal::fbm(Wavelet::new(&TILE2, 4), Octaves::<f32>::default());
+    check::<f32, 2, _>("fractal wavelet", &fbm, &mut rng);
+}
+
+#[test]
+fn buffers_of_the_wrong_length_are_refused() {
+    let perlin = Perlin::new(0);
+    let grid = Grid::new([0.0f32; 2], [0.5; 2], [10, 7]);
+    let mut out = vec![1.0f32; 69];
+    assert_eq!(
+        perlin.fill_grid(&grid, &mut out),
+        Err(Error::BufferLength {
+            expected: 70,
+            found: 69
+        })
+    );
+    assert!(out.iter().all(|&v| v == 1.0), "untouched on error");
+    let xs = [0.0f32; 4];
+    let ys = [0.0f32; 3];
+    assert!(perlin.fill_points([&xs, &ys], &mut [0.0; 4]).is_err());
+    assert!(perlin.fill_points([&xs, &xs], &mut [0.0; 3]).is_err());
+    // An empty grid fills an empty buffer; a grid whose size overflows needs usize::MAX.
+    let empty = Grid::new([0.0f32; 2], [0.5; 2], [0, 7]);
+    assert_eq!(perlin.fill_grid(&empty, &mut []), Ok(()));
+    let huge = Grid::new([0.0f32; 3], [0.5; 3], [usize::MAX, 2, 1]);
+    assert_eq!(huge.len(), usize::MAX);
+    assert!(perlin.fill_grid(&huge, &mut out).is_err());
+}
+
+#[test]
+fn reduce_lanes_equals_reduce_over_the_fast_range() {
+    use bandnoise::hash::Bbs;
+    fn exhaustive<const M: u32>() {
+        let fast = 16_777_216 - 8192;
+        let mut x = [0i32; LANES];
+        let mut start = -fast;
+        while start <= fast {
+            for (l, v) in x.iter_mut().enumerate() {
+                *v = (start + l as i32).min(fast);
+            }
+            let r = Bbs::<M>::reduce_lanes(&x);
+            for l in 0..LANES {
+                assert_eq!(r[l], Bbs::<M>::reduce(x[l]), "M = {M}, x = {}", x[l]);
+            }
+            start += LANES as i32;
+        }
+        // Out of the fast range: the fallback.
+        let far = [i32::MIN, i32::MAX, fast + 1, -fast - 1].repeat(4);
+        let far: [i32; LANES] = far.try_into().unwrap();
+        assert_eq!(Bbs::<M>::reduce_lanes(&far), far.map(Bbs::<M>::reduce));
+    }
+    exhaustive::<61>();
+    exhaustive::<4093>();
+    exhaustive::<2>();
+}
