@@ -82,7 +82,7 @@ impl<R: Real, const D: usize> Grid<R, D> {
     pub fn len(&self) -> usize {
         self.size
             .iter()
-            .fold(1usize, |n, &s| n.checked_mul(s).unwrap_or(usize::MAX))
+            .fold(1usize, |n, &s| n.saturating_mul(s))
     }
 
     /// Whether the grid has no points.
@@ -122,10 +122,9 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
         // The row's index along axes 1.. (axis 1 fastest).
         let mut rest = row;
-        for a in 1..D {
-            let i = rest % grid.size[a];
-            rest /= grid.size[a];
-            lanes[a] = [grid.coordinate(a, i); LANES];
+        for (a, (lane, &size)) in lanes.iter_mut().zip(&grid.size).enumerate().skip(1) {
+            *lane = [grid.coordinate(a, rest % size); LANES];
+            rest /= size;
         }
         for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
             for (l, x) in lanes[0].iter_mut().enumerate() {

@@ -69,6 +69,10 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
     }
 
     #[inline]
+    #[allow(
+        clippy::needless_range_loop,
+        reason = "the lane index transposes: it addresses cells and corner values alike"
+    )]
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         let (cell, f) = split_lanes(p);
         let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
@@ -80,8 +84,6 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
             }
         }
         interpolate_lanes(&mut v, &f.map(|fa| fa.map(Quintic::fade)));
-        for l in 0..LANES {
-            out[l] = v[0][l].canonical();
-        }
+        *out = v[0].map(R::canonical);
     }
 }
