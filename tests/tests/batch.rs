@@ -37,7 +37,7 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
     let count = 16 * LANES + 5;
     let mut axes: [Vec<R>; D] = core::array::from_fn(|_| Vec::with_capacity(count));
     for i in 0..count {
-        let special = (i / LANES) % 3 == 0;
+        let special = (i / LANES).is_multiple_of(3);
         for axis in &mut axes {
             let x = if special {
                 coordinate(rng)
