@@ -80,9 +80,7 @@ impl<R: Real, const D: usize> Grid<R, D> {
     /// The number of points, saturating at `usize::MAX` (no buffer has that many).
     #[must_use]
     pub fn len(&self) -> usize {
-        self.size
-            .iter()
-            .fold(1usize, |n, &s| n.saturating_mul(s))
+        self.size.iter().fold(1usize, |n, &s| n.saturating_mul(s))
     }
 
     /// Whether the grid has no points.
@@ -93,7 +91,7 @@ impl<R: Real, const D: usize> Grid<R, D> {
 
     /// The coordinate of index `i` along `axis`.
     #[inline]
-    fn coordinate(&self, axis: usize, i: usize) -> R {
+    pub(crate) fn coordinate(&self, axis: usize, i: usize) -> R {
         let i = R::from_i32(i.min(i32::MAX as usize) as i32);
         self.origin[axis].saturating_add(i.wrapping_mul(self.step[axis]))
     }
@@ -162,7 +160,7 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     Ok(())
 }
 
-fn check_len(expected: usize, found: usize) -> Result<(), Error> {
+pub(crate) fn check_len(expected: usize, found: usize) -> Result<(), Error> {
     if expected == found {
         Ok(())
     } else {

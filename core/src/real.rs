@@ -217,14 +217,19 @@ macro_rules! impl_real_float {
                 cell: &mut [i32; crate::batch::LANES],
                 frac: &mut [Self; crate::batch::LANES],
             ) {
-                // The in-range branch of `split`, with selects instead of branches, for all
-                // lanes at once when every lane is in range (the common case).
-                if x.iter()
-                    .all(|v| (-2_147_483_648.0..2_147_483_648.0).contains(v))
-                {
+                // Every lane in `(-2^22, 2^22)` (checked without branches): adding
+                // `MAGIC = 1.5·2^mantissa` rounds to an integer held in the low bits, read
+                // without a float-to-int cast (whose saturation would not vectorise), then one
+                // correction gives `floor` exactly; the rest is `split`'s in-range arithmetic, so
+                // the results are the same bit for bit.
+                const MAGIC: $t = 1.5 * (1u64 << (<$t>::MANTISSA_DIGITS - 1)) as $t;
+                const LIMIT: $t = 4_194_304.0;
+                let in_range = x.iter().fold(true, |ok, v| ok & (v.abs() < LIMIT));
+                if in_range {
                     for l in 0..crate::batch::LANES {
-                        let t = x[l] as i32;
-                        let c = t.wrapping_sub(((t as $t) > x[l]) as i32);
+                        let nearest =
+                            ((x[l] + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits())) as i32;
+                        let c = nearest.wrapping_sub(((nearest as $t) > x[l]) as i32);
                         let f = x[l] - c as $t;
                         let up = f >= 1.0;
                         cell[l] = c.wrapping_add(up as i32);

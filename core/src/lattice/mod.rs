@@ -36,8 +36,8 @@ pub use original::OriginalPerlin;
 pub use perlin::Perlin;
 pub use value::ValueNoise;
 
-use crate::Real;
-use crate::batch::LANES;
+use crate::batch::{self, Grid, LANES};
+use crate::{Error, Real};
 use kernel::{
     Fade, MAX_CORNERS, corner_offset, fade_all, interpolate, interpolate_with_gradient, minus_one,
     split_point,
@@ -54,6 +54,14 @@ pub(crate) trait GradientLattice<const D: usize> {
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R;
     /// The gradient vector selected by `h`.
     fn gradient<R: Real>(&self, h: u32) -> [R; D];
+
+    /// `dot(h, d)` for every lane, with one hash `h` for all of them (every lane in one cell):
+    /// lane `l` dots with `[d[0][l], d[1][l], …]`. Overrides choose the gradient once, outside
+    /// the lane loop, and must compute the same operations as `dot` in the same order.
+    #[inline]
+    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; D]) -> [R; LANES] {
+        core::array::from_fn(|l| self.dot(h, &core::array::from_fn(|a| d[a][l])))
+    }
 
     /// [`corner_hashes`](Self::corner_hashes) of every lane's cell, as `h[corner][lane]`.
     /// Table-free hashes override it with loops over lanes that vectorise.
@@ -97,21 +105,81 @@ pub(crate) fn sample_gradient_lanes<L: GradientLattice<D>, R: Real, const D: usi
     out: &mut [R; LANES],
 ) {
     let (cell, f) = split_lanes(p);
-    let h = lattice.corner_hashes_lanes(&cell);
+    let s = f.map(|fa| fa.map(L::Fade::fade));
+    *out = gradient_lanes(lattice, &cell, &f, &s);
+}
+
+/// The part of [`sample_gradient_lanes`] after the split: hashes, dot products and
+/// interpolation for lanes with cells `cell`, fractions `f` and faded fractions `s`.
+#[inline(always)]
+pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    cell: &[[i32; LANES]; D],
+    f: &[[R; LANES]; D],
+    s: &[[R; LANES]; D],
+) -> [R; LANES] {
     let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
     let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
-    for m in 0..(1 << D) {
-        for l in 0..LANES {
-            let d: [R; D] =
-                core::array::from_fn(|a| if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] });
-            v[m][l] = lattice.dot(h[m][l], &d);
+    let offset = |m: usize, l: usize| -> [R; D] {
+        core::array::from_fn(|a| if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] })
+    };
+    if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
+        // Every lane in one cell (a grid finer than LANES samples per cell, along a row): hash
+        // the corners once. With `h` the same in every lane, the gradient's selection is
+        // invariant in the lane loop, which the compiler hoists out, leaving straight
+        // vector arithmetic.
+        let h = lattice.corner_hashes(cell.map(|ca| ca[0]));
+        for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
+            let d = core::array::from_fn(|a| if m >> a & 1 == 0 { &f[a] } else { &f1[a] });
+            *vm = lattice.dot_uniform(h[m], d);
+        }
+    } else {
+        let h = lattice.corner_hashes_lanes(cell);
+        for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
+            for (l, vml) in vm.iter_mut().enumerate() {
+                *vml = lattice.dot(h[m][l], &offset(m, l));
+            }
         }
     }
-    let s = f.map(|fa| fa.map(L::Fade::fade));
-    interpolate_lanes(&mut v, &s);
-    for l in 0..LANES {
-        out[l] = v[0][l].canonical();
+    interpolate_lanes(&mut v, s);
+    v[0].map(R::canonical)
+}
+
+/// [`Noise::fill_grid`](crate::Noise::fill_grid) for a gradient lattice: column chunks of
+/// [`LANES`] points outermost, so each chunk's split and fade along axis 0 serve every row,
+/// and the other axes, constant along a row, are split and faded once per row. The values
+/// are those of [`sample_gradient_lanes`] (the same operations on the same numbers).
+pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    grid: &Grid<R, D>,
+    out: &mut [R],
+) -> Result<(), Error> {
+    batch::check_len(grid.len(), out.len())?;
+    if grid.is_empty() {
+        return Ok(());
     }
+    let width = grid.size[0];
+    let rows = out.len() / width;
+    for start in (0..width).step_by(LANES) {
+        let x: [R; LANES] = core::array::from_fn(|l| grid.coordinate(0, start + l));
+        let (mut cell, mut f) = ([[0i32; LANES]; D], [[R::ZERO; LANES]; D]);
+        R::split_lanes(&x, &mut cell[0], &mut f[0]);
+        let mut s = [[R::ZERO; LANES]; D];
+        s[0] = f[0].map(L::Fade::fade);
+        let n = LANES.min(width - start);
+        for row in 0..rows {
+            // The row's index along axes 1.. (axis 1 fastest).
+            let mut rest = row;
+            for a in 1..D {
+                let (c, fa) = grid.coordinate(a, rest % grid.size[a]).split();
+                rest /= grid.size[a];
+                (cell[a], f[a], s[a]) = ([c; LANES], [fa; LANES], [L::Fade::fade(fa); LANES]);
+            }
+            let v = gradient_lanes(lattice, &cell, &f, &s);
+            out[row * width + start..][..n].copy_from_slice(&v[..n]);
+        }
+    }
+    Ok(())
 }
 
 /// [`split_point`] over lanes: cells and fractions, axis by axis.
@@ -129,7 +197,7 @@ pub(crate) fn split_lanes<R: Real, const D: usize>(
 }
 
 /// [`interpolate`] over lanes: the result is left in `v[0]`.
-#[inline]
+#[inline(always)]
 pub(crate) fn interpolate_lanes<R: Real, const D: usize>(
     v: &mut [[R; LANES]; MAX_CORNERS],
     t: &[[R; LANES]; D],
@@ -188,6 +256,13 @@ macro_rules! gradient_noise_impls {
             ) {
                 crate::lattice::sample_gradient_lanes(self, p, out);
             }
+            fn fill_grid(
+                &self,
+                grid: &crate::batch::Grid<R, D>,
+                out: &mut [R],
+            ) -> Result<(), crate::Error> {
+                crate::lattice::fill_grid_gradient(self, grid, out)
+            }
         }
 
         impl<R: crate::Real, const D: usize, $($generics)*> crate::NoiseGradient<R, D> for $ty
@@ -218,4 +293,12 @@ pub(crate) fn half_dims(dims: usize) -> f32 {
 #[inline]
 pub(crate) fn signed<R: Real>(h: u32, bit: u32, x: R) -> R {
     if h >> bit & 1 == 0 { x } else { -x }
+}
+
+/// The factor `±1` that [`signed`] applies: multiplying by it is exact, and equals `signed`
+/// bit for bit (`−1 · x` is IEEE negation; in fixed point, `x` is at most 1 in magnitude here),
+/// so the lane kernels multiply instead of branching per lane.
+#[inline]
+pub(crate) fn sign<R: Real>(h: u32, bit: u32) -> R {
+    if h >> bit & 1 == 0 { R::ONE } else { -R::ONE }
 }

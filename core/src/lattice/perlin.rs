@@ -6,8 +6,9 @@
 //! reproduces his reference values bit for bit.
 
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first};
-use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
+use super::{GradientLattice, gradient_noise_impls, half_dims, sign, signed};
 use crate::Real;
+use crate::batch::LANES;
 use crate::hash::Permutation;
 
 /// Perlin's improved noise in 1 to 4 dimensions.
@@ -76,6 +77,33 @@ fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
     signed(h, 0, u) + signed(h, 1, v)
 }
 
+/// [`grad3`] for every lane with one hash; `z` is `None` for 2D (where `grad3` takes `z = 0`).
+#[inline]
+fn grad3_uniform<R: Real>(
+    h: u32,
+    x: &[R; LANES],
+    y: &[R; LANES],
+    z: Option<&[R; LANES]>,
+) -> [R; LANES] {
+    let h = h & 15;
+    let (su, sv) = (sign::<R>(h, 0), sign::<R>(h, 1));
+    let u = if h < 8 { x } else { y };
+    let v = if h < 4 {
+        Some(y)
+    } else if h == 12 || h == 14 {
+        Some(x)
+    } else {
+        z
+    };
+    match v {
+        Some(v) => core::array::from_fn(|l| u[l].mul_rn(su) + v[l].mul_rn(sv)),
+        None => {
+            let zero = signed(h, 1, R::ZERO);
+            u.map(|u| u.mul_rn(su) + zero)
+        }
+    }
+}
+
 /// The gradient vector `grad3` takes the dot product with.
 #[inline]
 fn grad3_vector(h: u32) -> [i32; 3] {
@@ -119,6 +147,10 @@ impl GradientLattice<2> for Perlin {
         grad3(h, d[0], d[1], R::ZERO)
     }
     #[inline]
+    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; 2]) -> [R; LANES] {
+        grad3_uniform(h, d[0], d[1], None)
+    }
+    #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 2] {
         let g = grad3_vector(h);
         [R::from_i32(g[0]), R::from_i32(g[1])]
@@ -133,6 +165,10 @@ impl GradientLattice<3> for Perlin {
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {
         grad3(h, d[0], d[1], d[2])
+    }
+    #[inline]
+    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; 3]) -> [R; LANES] {
+        grad3_uniform(h, d[0], d[1], Some(d[2]))
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 3] {
