@@ -27,7 +27,7 @@ wasm-bindgen target/wasm32-unknown-unknown/web/bandnoise_wasm.wasm \
     --target web --out-dir web/pkg --no-typescript
 # The features rustc's wasm32 target emits, plus simd128; not -all, which lets wasm-opt use
 # encodings Chromium does not enable by default.
-tests/e2e/node_modules/.bin/wasm-opt -O3 \
+tests/e2e/node_modules/.bin/wasm-opt -Os --strip-producers --strip-target-features \
     --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
     --enable-mutable-globals --enable-multivalue --enable-reference-types \
     web/pkg/bandnoise_wasm_bg.wasm -o web/pkg/bandnoise_wasm_bg.wasm

@@ -1,5 +1,6 @@
-// Times bandnoise's 2D Perlin, mNoise and wavelet noise (wasm) against the npm simplex-noise
-// package (JavaScript) over the same grid, and reports the ratios in window.benchResults.
+// Times bandnoise's 2D Perlin, mNoise and wavelet noise (wasm), point by point and through the
+// batch API (fill_grid, simd128), against the npm simplex-noise package (JavaScript) over the
+// same grid, and reports the ratios in window.benchResults.
 import init, { bench_sum } from './pkg/bandnoise_wasm.js';
 import { createNoise2D } from './vendor/simplex-noise.js';
 
@@ -35,7 +36,9 @@ const results = {
     return acc;
   }),
 };
-for (const kind of ['perlin', 'mnoise', 'wavelet']) results[kind] = best(() => bench_sum(kind, COUNT));
+for (const kind of ['perlin', 'mnoise', 'wavelet', 'perlin-batch', 'mnoise-batch']) {
+  results[kind] = best(() => bench_sum(kind, COUNT));
+}
 const body = document.querySelector('#results tbody');
 for (const [name, r] of Object.entries(results)) {
   r.ratio = r.msps / results.simplex.msps;

@@ -1,5 +1,6 @@
 //! What the page asks for, checked.
 
+use bandnoise::Error;
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::wavelet::{Bands, Distribution};
 use wasm_bindgen::prelude::*;
@@ -59,7 +60,45 @@ fn finite(name: &str, v: f64) -> Result<f32, String> {
     if v.is_finite() && v.abs() <= 1e30 {
         Ok(v as f32)
     } else {
-        Err(format!("{name} must be a finite number, not {v}"))
+        Err(format!("{name} must be a finite number, not {}", num(v)))
+    }
+}
+
+/// A number in a message. In the browser JavaScript formats it (`Number.prototype.toString`),
+/// so core's float formatting (about 15 KB of code) stays out of the module; on the host (the
+/// unit tests) Rust's `Display` does.
+fn num(v: f64) -> String {
+    #[cfg(target_arch = "wasm32")]
+    {
+        js_sys::Number::from(v)
+            .to_string_with_radix(10)
+            .map(String::from)
+            .unwrap_or_default()
+    }
+    #[cfg(not(target_arch = "wasm32"))]
+    {
+        format!("{v}")
+    }
+}
+
+/// The core's refusal as a message: the core's wording, with [`num`] for the numbers (the
+/// core's `Display` would bring float formatting back in).
+fn describe(e: Error) -> String {
+    match e {
+        Error::OctaveCount { count, max } => format!("octave count {count} is outside 1..={max}"),
+        Error::Lacunarity(v) => {
+            format!("lacunarity {} must be finite and in (0, 16]", num(v.into()))
+        }
+        Error::Gain(v) => format!("gain {} must be finite and in [-1, 1]", num(v.into())),
+        Error::TooManyBands { count, max } => {
+            format!("{count} wavelet bands given, at most {max} are allowed")
+        }
+        Error::BandWeight { index, value } => format!(
+            "band weight {} at {index} must be finite and at most 1e6 in magnitude",
+            num(value.into())
+        ),
+        // Octaves::new and Bands::new refuse only for the reasons above.
+        _ => "invalid settings".into(),
     }
 }
 
@@ -144,13 +183,17 @@ impl Params {
         };
         if !(seed.is_finite() && seed >= 0.0 && seed <= u32::MAX as f64 && seed.fract() == 0.0) {
             return Err(format!(
-                "seed must be a whole number from 0 to {}, not {seed}",
-                u32::MAX
+                "seed must be a whole number from 0 to {}, not {}",
+                u32::MAX,
+                num(seed)
             ));
         }
         let zoom = finite("zoom", zoom)?;
         if !(zoom > 0.0 && zoom <= 1e6) {
-            return Err(format!("zoom must be positive and at most 1e6, not {zoom}"));
+            return Err(format!(
+                "zoom must be positive and at most 1e6, not {}",
+                num(zoom.into())
+            ));
         }
         let pan = [finite("pan x", pan_x)?, finite("pan y", pan_y)?];
         let time = finite("time", time)?;
@@ -167,13 +210,14 @@ impl Params {
         };
         if !(octaves.is_finite() && (1.0..=16.0).contains(&octaves) && octaves.fract() == 0.0) {
             return Err(format!(
-                "octaves must be a whole number from 1 to 16, not {octaves}"
+                "octaves must be a whole number from 1 to 16, not {}",
+                num(octaves)
             ));
         }
         let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
         // The core checks the ranges and says why.
-        Octaves::<f32>::new(octaves as u32, lacunarity, gain).map_err(|e| e.to_string())?;
-        let bands = Bands::new(-3, band_weights).map_err(|e| e.to_string())?;
+        Octaves::<f32>::new(octaves as u32, lacunarity, gain).map_err(describe)?;
+        let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if kind == NoiseKind::Wavelet && band_weights.iter().all(|w| *w == 0.0) {
             return Err("every band weight is zero: raise at least one band".into());
         }

@@ -111,7 +111,7 @@ pub(crate) fn sample_gradient_lanes<L: GradientLattice<D>, R: Real, const D: usi
 
 /// The part of [`sample_gradient_lanes`] after the split: hashes, dot products and
 /// interpolation for lanes with cells `cell`, fractions `f` and faded fractions `s`.
-#[inline(always)]
+#[inline]
 pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
     lattice: &L,
     cell: &[[i32; LANES]; D],
@@ -197,7 +197,7 @@ pub(crate) fn split_lanes<R: Real, const D: usize>(
 }
 
 /// [`interpolate`] over lanes: the result is left in `v[0]`.
-#[inline(always)]
+#[inline]
 pub(crate) fn interpolate_lanes<R: Real, const D: usize>(
     v: &mut [[R; LANES]; MAX_CORNERS],
     t: &[[R; LANES]; D],
