@@ -6,7 +6,9 @@ use bandnoise::Error;
 use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::prelude::*;
-use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, TILE3_I16, Wavelet};
+use bandnoise::wavelet::{
+    Bands, Distribution, Multiband, TILE2, TILE3, TILE3_I16, Tiling, Wavelet,
+};
 use bandnoise_tests::{AllTypes, Lattice, Rng};
 
 /// The exact bits of a value of any of the three types (`to_f64` is exact for all three).
@@ -140,6 +142,30 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
     check_all_types::<2, _>("wavelet", &Wavelet::new(&TILE2, 3), &mut rng);
     check_all_types::<3, _>("wavelet", &Wavelet::new(&TILE3, 3), &mut rng);
     check_all_types::<3, _>("wavelet i16", &Wavelet::new(&TILE3_I16, 3), &mut rng);
+    let periodic = Wavelet::new(&TILE2, 6).with_tiling(Tiling::Periodic);
+    check_all_types::<2, _>("wavelet periodic", &periodic, &mut rng);
+    // Fine grids: whole chunks inside one block (the vectorised path), and across borders.
+    // Rows whose coefficients reach into the next block along y or z (every lane alike).
+    for fine in [
+        Grid::new([-40.3f32, 7.1, 2.0], [0.01, 0.37, 0.0], [300, 4, 1]),
+        Grid::new([-40.3f32, 31.2, 0.37], [0.01, 0.2, 0.0], [300, 4, 1]),
+    ] {
+        for band in [
+            Wavelet::new(&TILE3, 1),
+            Wavelet::new(&TILE3, 1).with_tiling(Tiling::Periodic),
+        ] {
+            let mut out = vec![0.0f32; fine.len()];
+            band.fill_grid(&fine, &mut out).unwrap();
+            for (k, v) in out.iter().enumerate() {
+                let p = fine.point([k % 300, k / 300, 0]);
+                assert_eq!(
+                    v.to_bits(),
+                    band.sample(p).to_bits(),
+                    "wavelet fine grid at {p:?}"
+                );
+            }
+        }
+    }
     let multi = Multiband::new(&TILE3, 1, Bands::default(), Distribution::Uniform);
     check_all_types::<3, _>("multiband", &multi, &mut rng);
     let fbm = Fractal::fbm(Wavelet::new(&TILE2, 4), Octaves::<f32>::default());

@@ -13,6 +13,7 @@
 //! coefficients are unrelated there. The spectrum test (`tests/tests/wavelet.rs`) measures that
 //! leak and finds it small (the figures are printed there).
 
+use crate::batch::{LANES, lane};
 use crate::{Noise, Real};
 
 use super::tile::{Tile2, Tile3};
@@ -283,47 +284,162 @@ impl<'t, T> Wavelet<'t, T> {
         for a in 0..D {
             split[a] = (n - local0[a]).min(3);
         }
-        // Sum block by block: each block's coefficients form a separable sub-range.
-        let mut sum = R::ZERO;
+        // Sum block by block: each block's coefficients form a separable sub-range. The
+        // summing is `add_block` with one lane, so the batch path shares it.
+        let weights = weights.map(|w| w.map(|wj| [wj]));
+        let mut sum = [R::ZERO];
         let mut m = crossing;
         loop {
-            let off = axis_offsets(variant(m));
+            let off = axis_offsets(variant(m)).map(|o| o.map(|oj| [oj]));
             // Coefficient j along axis a belongs to this block when it is on the block's side
             // of the split (loops run over 0..3 so every index is provably in range).
             let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
-            let planes = if D == 3 { 3 } else { 1 };
-            for jz in 0..planes {
-                if D == 3 && !mine(D - 1, jz) {
-                    continue;
-                }
-                let zoff = if D == 3 { off[D - 1][jz] } else { 0 };
-                let mut plane = R::ZERO;
-                for jy in 0..3 {
-                    if !mine(1, jy) {
-                        continue;
-                    }
-                    let base = zoff + off[1][jy];
-                    let mut row = R::ZERO;
-                    for jx in 0..3 {
-                        if mine(0, jx) {
-                            row = row + weights[0][jx].mul_rn(self.tile.flat(base + off[0][jx]));
-                        }
-                    }
-                    plane = plane + weights[1][jy].mul_rn(row);
-                }
-                sum = sum
-                    + if D == 3 {
-                        weights[D - 1][jz].mul_rn(plane)
-                    } else {
-                        plane
-                    };
-            }
+            self.add_block(&mut sum, &weights, &off, mine);
             if m == 0 {
                 break;
             }
             m = (m - 1) & crossing; // the next subset of the crossing axes
         }
-        sum.canonical()
+        sum[0].canonical()
+    }
+}
+
+impl<T> Wavelet<'_, T> {
+    /// [`evaluate`](Self::evaluate) for [`LANES`] points, bit-identical to it. When the lanes
+    /// agree on the blocks their coefficients touch (all lanes in the same block along each
+    /// axis, and along an axis where coefficients reach into the next block, all lanes at the
+    /// same coefficient: a row of a grid, along its constant axes), each block's orientation is
+    /// resolved once for all lanes and every lane sums its coefficients in `evaluate`'s order.
+    /// Otherwise every lane takes `evaluate`.
+    #[inline]
+    fn evaluate_lanes<R: Real, const D: usize>(&self, p: &[[R; LANES]; D], out: &mut [R; LANES])
+    where
+        T: TileData<D>,
+    {
+        const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
+        let n = T::SIZE;
+        let mut weights = [[[R::ZERO; LANES]; 3]; D];
+        let mut local0 = [[0usize; LANES]; D];
+        let mut block = [0i32; D];
+        let mut crossing = 0usize;
+        let mut uniform = true;
+        for a in 0..D {
+            for l in 0..LANES {
+                let (first, w) = bspline3(p[a][l]);
+                for (wj, w) in weights[a].iter_mut().zip(w) {
+                    wj[l] = w;
+                }
+                let b = first.div_euclid(n as i32);
+                local0[a][l] = first.rem_euclid(n as i32) as usize;
+                if l == 0 {
+                    block[a] = b;
+                }
+                uniform &= b == block[a];
+            }
+            if local0[a].iter().any(|&l0| l0 + 2 >= n) {
+                crossing |= 1 << a;
+                uniform &= local0[a].iter().all(|&l0| l0 == local0[a][0]);
+            }
+        }
+        if !uniform {
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = self.evaluate(lane(p, l));
+            }
+            return;
+        }
+        // As in `evaluate`: along axis a, coefficients j < split[a] lie in the block, the rest
+        // in the next (the same for every lane where any lane crosses).
+        let split: [usize; D] = core::array::from_fn(|a| (n - local0[a][0]).min(3));
+        let mut sum = [R::ZERO; LANES];
+        let mut m = crossing;
+        loop {
+            let v = match self.tiling {
+                Tiling::Periodic => 0,
+                Tiling::Varied => {
+                    let mut b = block;
+                    for (a, ba) in b.iter_mut().enumerate() {
+                        *ba = ba.wrapping_add((m >> a & 1) as i32);
+                    }
+                    block_variant(self.seed, b)
+                }
+            };
+            // The flat-index contribution of coefficient j along each axis, per lane.
+            let mut offset = [[[0usize; LANES]; 3]; D];
+            for a in 0..D {
+                let (target, flip) = axis_map::<D>(v, a);
+                let stride = [1, n, n * n][target];
+                for (j, oj) in offset[a].iter_mut().enumerate() {
+                    for (o, &l0) in oj.iter_mut().zip(&local0[a]) {
+                        let l = l0 + j;
+                        let l = if l >= n { l - n } else { l };
+                        *o = (if flip { n - 1 - l } else { l }) * stride;
+                    }
+                }
+            }
+            // Coefficient j along axis a belongs to this block when it is on the block's side
+            // of the split; without crossing axes, every coefficient does (a separate
+            // instantiation, without the tests).
+            let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
+            if crossing == 0 {
+                self.add_block(&mut sum, &weights, &offset, |_, _| true);
+            } else {
+                self.add_block(&mut sum, &weights, &offset, mine);
+            }
+            if m == 0 {
+                break;
+            }
+            m = (m - 1) & crossing;
+        }
+        for (o, s) in out.iter_mut().zip(sum) {
+            *o = s.canonical();
+        }
+    }
+}
+
+impl<T> Wavelet<'_, T> {
+    /// Adds each of `L` lanes' coefficients of one block (those `mine(axis, j)` selects),
+    /// weighted, to `sum`: rows along x, then planes along y, then z. `evaluate` is this with
+    /// one lane, so the batch path (16 lanes) sums in the same order by construction.
+    #[inline]
+    fn add_block<R: Real, const D: usize, const L: usize>(
+        &self,
+        sum: &mut [R; L],
+        weights: &[[[R; L]; 3]; D],
+        offset: &[[[usize; L]; 3]; D],
+        mine: impl Fn(usize, usize) -> bool,
+    ) where
+        T: TileData<D>,
+    {
+        let planes = if D == 3 { 3 } else { 1 };
+        for (l, s) in sum.iter_mut().enumerate() {
+            for jz in 0..planes {
+                if D == 3 && !mine(D - 1, jz) {
+                    continue;
+                }
+                let zoff = if D == 3 { offset[D - 1][jz][l] } else { 0 };
+                let mut plane = R::ZERO;
+                for jy in 0..3 {
+                    if !mine(1, jy) {
+                        continue;
+                    }
+                    let base = zoff + offset[1][jy][l];
+                    let mut row = R::ZERO;
+                    for jx in 0..3 {
+                        if mine(0, jx) {
+                            let c = self.tile.flat(base + offset[0][jx][l]);
+                            row = row + weights[0][jx][l].mul_rn(c);
+                        }
+                    }
+                    plane = plane + weights[1][jy][l].mul_rn(row);
+                }
+                *s = *s
+                    + if D == 3 {
+                        weights[D - 1][jz][l].mul_rn(plane)
+                    } else {
+                        plane
+                    };
+            }
+        }
     }
 }
 
@@ -331,6 +447,11 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         self.evaluate(p)
+    }
+
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        self.evaluate_lanes(p, out);
     }
 
     /// `|Σ_c w(c) n_c| ≤ max |n_c|`: the weights are non-negative and sum to 1. Plus 2⁻¹⁰ for
