@@ -14,7 +14,11 @@
 //! next step, in fixed-size arrays, so the compiler turns those loops into SIMD instructions
 //! (SSE2 on x86-64, `simd128` on wasm32, Helium or nothing on microcontrollers, where the same
 //! code simply runs as loops). Fractal sums call their noise's `sample_lanes` once per octave.
-//! Noises without an override (wavelet noise) evaluate lane by lane.
+//! Wavelet noise resolves a block's orientation once for all lanes and gathers each lane's
+//! coefficients. Noises without an override (multiband, projected) evaluate lane by lane.
+//!
+//! Measured against the peer crates (`bench/README.md`): Perlin 2D in a grid costs 26
+//! instructions per sample in batch against 196 point by point (x86-64, SSE2).
 //!
 //! Nothing here allocates: the lanes live on the stack (a 4D lattice chunk holds 16 × [`LANES`]
 //! corner values, 1 KiB in `f32`).
