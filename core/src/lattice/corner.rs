@@ -8,7 +8,7 @@
 //! `noise3(x, y, 0) == noise2(x, y)`, bit for bit.
 
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_last_first};
-use super::{GradientLattice, gradient_noise_impls, half_dims, sign, signed};
+use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
 use crate::Real;
 use crate::batch::LANES;
 use crate::hash::{Bbs, Permutation, seed::splitmix64};
@@ -21,19 +21,6 @@ fn corner_dot<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
         sum = sum + signed(h, a as u32, *x);
     }
     sum
-}
-
-/// [`corner_dot`] for every lane with one hash.
-#[inline]
-fn corner_dot_uniform<R: Real, const D: usize>(h: u32, d: [&[R; LANES]; D]) -> [R; LANES] {
-    let signs: [R; D] = core::array::from_fn(|a| sign(h, a as u32));
-    core::array::from_fn(|l| {
-        let mut sum = d[0][l].mul_rn(signs[0]);
-        for a in 1..D {
-            sum = sum + d[a][l].mul_rn(signs[a]);
-        }
-        sum
-    })
 }
 
 #[inline]
@@ -153,10 +140,6 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
         corner_dot(h ^ self.flip, d)
     }
     #[inline]
-    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; D]) -> [R; LANES] {
-        corner_dot_uniform(h ^ self.flip, d)
-    }
-    #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; D] {
         corner_gradient(h ^ self.flip)
     }
@@ -221,10 +204,6 @@ impl<const D: usize> GradientLattice<D> for CNoise {
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
         corner_dot(h, d)
-    }
-    #[inline]
-    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; D]) -> [R; LANES] {
-        corner_dot_uniform(h, d)
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; D] {

@@ -55,12 +55,17 @@ pub(crate) trait GradientLattice<const D: usize> {
     /// The gradient vector selected by `h`.
     fn gradient<R: Real>(&self, h: u32) -> [R; D];
 
-    /// `dot(h, d)` for every lane, with one hash `h` for all of them (every lane in one cell):
-    /// lane `l` dots with `[d[0][l], d[1][l], …]`. Overrides choose the gradient once, outside
-    /// the lane loop, and must compute the same operations as `dot` in the same order.
+    /// `dot(h, d)` given the gradient `g = gradient(h)`: `Σ_a d_a·g_a` in axis order. Equal to
+    /// `dot` except, possibly, for the sign of a zero (every gradient here has components whose
+    /// products are exact, and the missing terms of `dot` are the zero components), which
+    /// sampling canonicalises; the batch test checks the results bit for bit.
     #[inline]
-    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; D]) -> [R; LANES] {
-        core::array::from_fn(|l| self.dot(h, &core::array::from_fn(|a| d[a][l])))
+    fn dot_with<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
+        let mut sum = d[0].mul_rn(g[0]);
+        for a in 1..D {
+            sum = sum + d[a].mul_rn(g[a]);
+        }
+        sum
     }
 
     /// [`corner_hashes`](Self::corner_hashes) of every lane's cell, as `h[corner][lane]`.
@@ -119,30 +124,40 @@ pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
     s: &[[R; LANES]; D],
 ) -> [R; LANES] {
     let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
-    let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
     let offset = |m: usize, l: usize| -> [R; D] {
         core::array::from_fn(|a| if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] })
     };
     if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
         // Every lane in one cell (a grid finer than LANES samples per cell, along a row): hash
-        // the corners once. With `h` the same in every lane, the gradient's selection is
-        // invariant in the lane loop, which the compiler hoists out, leaving straight
-        // vector arithmetic.
+        // the corners and look up their gradients once; then each lane runs the point
+        // kernel's dot products and interpolation in registers, one straight-line body the
+        // compiler vectorises across lanes.
         let h = lattice.corner_hashes(cell.map(|ca| ca[0]));
-        for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
-            let d = core::array::from_fn(|a| if m >> a & 1 == 0 { &f[a] } else { &f1[a] });
-            *vm = lattice.dot_uniform(h[m], d);
+        let mut g = [[R::ZERO; D]; MAX_CORNERS];
+        for (m, gm) in g.iter_mut().enumerate().take(1 << D) {
+            *gm = lattice.gradient(h[m]);
         }
+        let mut out = [R::ZERO; LANES];
+        for (l, o) in out.iter_mut().enumerate() {
+            let mut v = [R::ZERO; MAX_CORNERS];
+            for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
+                *vm = lattice.dot_with(&g[m], &offset(m, l));
+            }
+            let t: [R; D] = core::array::from_fn(|a| s[a][l]);
+            *o = interpolate(v, &t).canonical();
+        }
+        out
     } else {
+        let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
         let h = lattice.corner_hashes_lanes(cell);
         for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
             for (l, vml) in vm.iter_mut().enumerate() {
                 *vml = lattice.dot(h[m][l], &offset(m, l));
             }
         }
+        interpolate_lanes(&mut v, s);
+        v[0].map(R::canonical)
     }
-    interpolate_lanes(&mut v, s);
-    v[0].map(R::canonical)
 }
 
 /// [`Noise::fill_grid`](crate::Noise::fill_grid) for a gradient lattice: column chunks of
@@ -293,12 +308,4 @@ pub(crate) fn half_dims(dims: usize) -> f32 {
 #[inline]
 pub(crate) fn signed<R: Real>(h: u32, bit: u32, x: R) -> R {
     if h >> bit & 1 == 0 { x } else { -x }
-}
-
-/// The factor `±1` that [`signed`] applies: multiplying by it is exact, and equals `signed`
-/// bit for bit (`−1 · x` is IEEE negation; in fixed point, `x` is at most 1 in magnitude here),
-/// so the lane kernels multiply instead of branching per lane.
-#[inline]
-pub(crate) fn sign<R: Real>(h: u32, bit: u32) -> R {
-    if h >> bit & 1 == 0 { R::ONE } else { -R::ONE }
 }

@@ -6,9 +6,8 @@
 //! reproduces his reference values bit for bit.
 
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first};
-use super::{GradientLattice, gradient_noise_impls, half_dims, sign, signed};
+use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
 use crate::Real;
-use crate::batch::LANES;
 use crate::hash::Permutation;
 
 /// Perlin's improved noise in 1 to 4 dimensions.
@@ -77,49 +76,31 @@ fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
     signed(h, 0, u) + signed(h, 1, v)
 }
 
-/// [`grad3`] for every lane with one hash; `z` is `None` for 2D (where `grad3` takes `z = 0`).
-#[inline]
-fn grad3_uniform<R: Real>(
-    h: u32,
-    x: &[R; LANES],
-    y: &[R; LANES],
-    z: Option<&[R; LANES]>,
-) -> [R; LANES] {
-    let h = h & 15;
-    let (su, sv) = (sign::<R>(h, 0), sign::<R>(h, 1));
-    let u = if h < 8 { x } else { y };
-    let v = if h < 4 {
-        Some(y)
-    } else if h == 12 || h == 14 {
-        Some(x)
-    } else {
-        z
-    };
-    match v {
-        Some(v) => core::array::from_fn(|l| u[l].mul_rn(su) + v[l].mul_rn(sv)),
-        None => {
-            let zero = signed(h, 1, R::ZERO);
-            u.map(|u| u.mul_rn(su) + zero)
-        }
-    }
-}
+/// The gradient Perlin's reference `grad(hash, x, y, z)` dots with for `hash & 15`: the 12
+/// edges of the cube and 4 of them repeated (checked against `grad3` by a test).
+const GRAD3: [[i8; 3]; 16] = [
+    [1, 1, 0],
+    [-1, 1, 0],
+    [1, -1, 0],
+    [-1, -1, 0],
+    [1, 0, 1],
+    [-1, 0, 1],
+    [1, 0, -1],
+    [-1, 0, -1],
+    [0, 1, 1],
+    [0, -1, 1],
+    [0, 1, -1],
+    [0, -1, -1],
+    [1, 1, 0],
+    [0, -1, 1],
+    [-1, 1, 0],
+    [0, -1, -1],
+];
 
 /// The gradient vector `grad3` takes the dot product with.
 #[inline]
 fn grad3_vector(h: u32) -> [i32; 3] {
-    let h = h & 15;
-    let mut g = [0i32; 3];
-    let u = if h < 8 { 0 } else { 1 };
-    let v = if h < 4 {
-        1
-    } else if h == 12 || h == 14 {
-        0
-    } else {
-        2
-    };
-    g[u] += if h & 1 == 0 { 1 } else { -1 };
-    g[v] += if h & 2 == 0 { 1 } else { -1 };
-    g
+    GRAD3[(h & 15) as usize].map(i32::from)
 }
 
 impl GradientLattice<1> for Perlin {
@@ -147,10 +128,6 @@ impl GradientLattice<2> for Perlin {
         grad3(h, d[0], d[1], R::ZERO)
     }
     #[inline]
-    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; 2]) -> [R; LANES] {
-        grad3_uniform(h, d[0], d[1], None)
-    }
-    #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 2] {
         let g = grad3_vector(h);
         [R::from_i32(g[0]), R::from_i32(g[1])]
@@ -165,10 +142,6 @@ impl GradientLattice<3> for Perlin {
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {
         grad3(h, d[0], d[1], d[2])
-    }
-    #[inline]
-    fn dot_uniform<R: Real>(&self, h: u32, d: [&[R; LANES]; 3]) -> [R; LANES] {
-        grad3_uniform(h, d[0], d[1], Some(d[2]))
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 3] {
@@ -211,3 +184,21 @@ impl GradientLattice<4> for Perlin {
 }
 
 gradient_noise_impls!(Perlin, [], half_dims);
+
+#[cfg(test)]
+mod tests {
+    use super::{GRAD3, grad3};
+
+    #[test]
+    fn gradient_table_is_the_vector_grad3_dots_with() {
+        // Unit coordinates pick each component out of grad3's dot product.
+        for h in 0..16u32 {
+            let picked = [
+                grad3(h, 1.0f64, 0.0, 0.0),
+                grad3(h, 0.0, 1.0, 0.0),
+                grad3(h, 0.0, 0.0, 1.0),
+            ];
+            assert_eq!(GRAD3[h as usize].map(f64::from), picked, "h = {h}");
+        }
+    }
+}
