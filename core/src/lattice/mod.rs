@@ -111,21 +111,30 @@ pub(crate) fn sample_gradient_lanes<L: GradientLattice<D>, R: Real, const D: usi
 ) {
     let (cell, f) = split_lanes(p);
     let s = f.map(|fa| fa.map(L::Fade::fade));
-    *out = gradient_lanes(lattice, &cell, &f, &s);
+    *out = gradient_lanes::<L, R, D, false>(lattice, &cell, &f, &s);
 }
 
 /// The part of [`sample_gradient_lanes`] after the split: hashes, dot products and
 /// interpolation for lanes with cells `cell`, fractions `f` and faded fractions `s`.
+///
+/// With `ROW`, the caller promises that along axes 1.. every lane holds the same numbers (a
+/// row of a grid); the one-cell path then reads lane 0 there, so the compiler sees those
+/// numbers, and their products with the gradients, as constants of the lane loop and computes
+/// them once. The same numbers enter the same operations: the results are unchanged.
 #[inline]
-pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
+pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize, const ROW: bool>(
     lattice: &L,
     cell: &[[i32; LANES]; D],
     f: &[[R; LANES]; D],
     s: &[[R; LANES]; D],
 ) -> [R; LANES] {
     let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
+    let at = |a: usize, l: usize| if ROW && a > 0 { 0 } else { l };
     let offset = |m: usize, l: usize| -> [R; D] {
-        core::array::from_fn(|a| if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] })
+        core::array::from_fn(|a| {
+            let l = at(a, l);
+            if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
+        })
     };
     if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
         // Every lane in one cell (a grid finer than LANES samples per cell, along a row): hash
@@ -143,7 +152,7 @@ pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
             for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
                 *vm = lattice.dot_with(&g[m], &offset(m, l));
             }
-            let t: [R; D] = core::array::from_fn(|a| s[a][l]);
+            let t: [R; D] = core::array::from_fn(|a| s[a][at(a, l)]);
             *o = interpolate(v, &t).canonical();
         }
         out
@@ -190,7 +199,7 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
                 rest /= grid.size[a];
                 (cell[a], f[a], s[a]) = ([c; LANES], [fa; LANES], [L::Fade::fade(fa); LANES]);
             }
-            let v = gradient_lanes(lattice, &cell, &f, &s);
+            let v = gradient_lanes::<L, R, D, true>(lattice, &cell, &f, &s);
             out[row * width + start..][..n].copy_from_slice(&v[..n]);
         }
     }
