@@ -2,7 +2,8 @@
 //! can be replayed from the environment, an enum over every lattice noise so a test can loop over
 //! all of them, and small statistics.
 
-use bandnoise::batch::LANES;
+use bandnoise::Error;
+use bandnoise::batch::{Grid, LANES};
 use bandnoise::prelude::*;
 
 /// SplitMix64, for test inputs.
@@ -135,6 +136,13 @@ where
     }
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         delegate!(self, n => n.sample_lanes(p, out))
+    }
+    // Forwarded too, so tests through this enum reach each noise's own grid kernel.
+    fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
+        delegate!(self, n => n.fill_grid(grid, out))
+    }
+    fn fill_points(&self, points: [&[R]; D], out: &mut [R]) -> Result<(), Error> {
+        delegate!(self, n => n.fill_points(points, out))
     }
 }
 
