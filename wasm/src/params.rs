@@ -112,49 +112,10 @@ impl Params {
     /// distribution or palette; a zoom that is not a positive finite number (at most 1e6);
     /// a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; band weights that
     /// are not finite, too many, or all zero for wavelet noise; and the core's own errors.
+    /// (JavaScript receives the message as a thrown string.)
     #[wasm_bindgen(constructor)]
     #[allow(clippy::too_many_arguments)]
     pub fn new(
-        kind: &str,
-        number: &str,
-        seed: f64,
-        zoom: f64,
-        pan_x: f64,
-        pan_y: f64,
-        time: f64,
-        fractal: &str,
-        octaves: f64,
-        lacunarity: f64,
-        gain: f64,
-        band_weights: &[f32],
-        distribution: &str,
-        projected: bool,
-        palette: &str,
-    ) -> Result<Params, JsValue> {
-        Self::check(
-            kind,
-            number,
-            seed,
-            zoom,
-            pan_x,
-            pan_y,
-            time,
-            fractal,
-            octaves,
-            lacunarity,
-            gain,
-            band_weights,
-            distribution,
-            projected,
-            palette,
-        )
-        .map_err(|e| JsValue::from_str(&e))
-    }
-}
-
-impl Params {
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn check(
         kind: &str,
         number: &str,
         seed: f64,

@@ -158,12 +158,7 @@ impl Demo {
     ///
     /// The canvas's own error if it refuses the image.
     pub fn draw(&self, ctx: &CanvasRenderingContext2d) -> Result<(), JsValue> {
-        let image = ImageData::new_with_u8_clamped_array_and_sh(
-            Clamped(&self.rgba),
-            self.size as u32,
-            self.size as u32,
-        )?;
-        ctx.put_image_data(&image, 0.0, 0.0)
+        put_rgba(ctx, &self.rgba, self.size)
     }
 
     /// Computes the frame's power spectrum (log magnitude, DC centred) and draws it on `ctx`.
@@ -176,12 +171,7 @@ impl Demo {
         for (s, px) in self.spectrum.iter().zip(self.spectrum_rgba.chunks_mut(4)) {
             px[..3].copy_from_slice(&[*s, *s, *s]);
         }
-        let image = ImageData::new_with_u8_clamped_array_and_sh(
-            Clamped(&self.spectrum_rgba),
-            self.size as u32,
-            self.size as u32,
-        )?;
-        ctx.put_image_data(&image, 0.0, 0.0)
+        put_rgba(ctx, &self.spectrum_rgba, self.size)
     }
 
     /// The histogram of the frame's values, standardised, in [`HISTOGRAM_BINS`] bins over
@@ -209,6 +199,13 @@ impl Demo {
     pub fn spectrum(&self) -> Vec<u8> {
         self.spectrum.clone()
     }
+}
+
+/// Draws a `size × size` RGBA buffer on `ctx` at (0, 0) with one `ImageData`.
+fn put_rgba(ctx: &CanvasRenderingContext2d, rgba: &[u8], size: usize) -> Result<(), JsValue> {
+    let image =
+        ImageData::new_with_u8_clamped_array_and_sh(Clamped(rgba), size as u32, size as u32)?;
+    ctx.put_image_data(&image, 0.0, 0.0)
 }
 
 /// The batch half of [`bench_sum`]: rows of 256 samples by `fill_grid`.

@@ -16,7 +16,6 @@ fn params(kind: &str, number: &str) -> Result<Params, String> {
         kind, number, 3.0, 32.0, 0.5, -1.5, 0.25, "none", 6.0, 1.99, 0.5, &BANDS, "gaussian",
         false, "grey",
     )
-    .map_err(|e| e.as_string().unwrap_or_default())
 }
 
 fn canvas() -> CanvasRenderingContext2d {
@@ -62,9 +61,7 @@ fn fixed_point_and_f32_give_nearly_the_same_frame() {
 
 #[wasm_bindgen_test]
 fn bad_parameters_are_refused_with_a_message() {
-    let bad = |r: Result<Params, wasm_bindgen::JsValue>| {
-        r.err().and_then(|e| e.as_string()).unwrap_or_default()
-    };
+    let bad = |r: Result<Params, String>| r.err().unwrap_or_default();
     let msg = bad(Params::new(
         "nope", "f32", 0.0, 32.0, 0.0, 0.0, 0.0, "none", 6.0, 2.0, 0.5, &BANDS, "gaussian", false,
         "grey",
