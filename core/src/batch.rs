@@ -106,6 +106,18 @@ impl<R: Real, const D: usize> Grid<R, D> {
     pub fn point(&self, index: [usize; D]) -> [R; D] {
         core::array::from_fn(|a| self.coordinate(a, index[a]))
     }
+
+    /// The first point of row `row` (rows are numbered with axis 1 fastest): its coordinates
+    /// along axes 1.. are those of every point of the row. The grid must not be empty.
+    pub(crate) fn row_start(&self, row: usize) -> [R; D] {
+        let mut index = [0usize; D];
+        let mut rest = row;
+        for (i, &size) in index.iter_mut().zip(&self.size).skip(1) {
+            *i = rest % size;
+            rest /= size;
+        }
+        self.point(index)
+    }
 }
 
 /// Evaluates `noise` over `grid` into `out` (see [`Noise::fill_grid`]).
@@ -123,11 +135,9 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
     for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
-        // The row's index along axes 1.. (axis 1 fastest).
-        let mut rest = row;
-        for (a, (lane, &size)) in lanes.iter_mut().zip(&grid.size).enumerate().skip(1) {
-            *lane = [grid.coordinate(a, rest % size); LANES];
-            rest /= size;
+        let start = grid.row_start(row);
+        for (lane, &x) in lanes.iter_mut().zip(&start).skip(1) {
+            *lane = [x; LANES];
         }
         for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
             for (l, x) in lanes[0].iter_mut().enumerate() {

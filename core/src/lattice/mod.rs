@@ -192,11 +192,9 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
         s[0] = f[0].map(L::Fade::fade);
         let n = LANES.min(width - start);
         for row in 0..rows {
-            // The row's index along axes 1.. (axis 1 fastest).
-            let mut rest = row;
+            let first = grid.row_start(row);
             for a in 1..D {
-                let (c, fa) = grid.coordinate(a, rest % grid.size[a]).split();
-                rest /= grid.size[a];
+                let (c, fa) = first[a].split();
                 (cell[a], f[a], s[a]) = ([c; LANES], [fa; LANES], [L::Fade::fade(fa); LANES]);
             }
             let v = gradient_lanes::<L, R, D, true>(lattice, &cell, &f, &s);
