@@ -19,8 +19,9 @@
 //! # Measured (see `tests/tests/wavelet.rs` and `tests/benches/wavelet.rs`)
 //!
 //! * Band variance averaged over 24 tiles: 2D 0.270 (paper 0.265), projected 0.294 (paper
-//!   0.296), 3D 0.1955 (paper 0.210: not reproduced; an independent numpy transcription of the
-//!   paper's algorithm gives 0.196 too). Means below 0.001.
+//!   0.296), 3D 0.1955 (paper 0.210, which is the figure of the odd 65³ tile that the printed
+//!   Appendix 1 code builds for a requested 64³, erratum 1: a transcription of it gives 0.210,
+//!   and 0.196 with an even tile). Means below 0.001.
 //! * Power below half the band's lower edge (256² samples, FFT): one 2D band 0.002%, Perlin at
 //!   the same scale 2.9%. A plane through 3D noise: sliced 4.1%, projected 0.6%, Perlin 15%.
 //! * Varied tiling: no jump across block borders (≤ 4e-6 over 2e-6); the borders raise the

@@ -10,9 +10,11 @@
 //! tile and not only on average (a single 64² tile's variance is up to 8% off the average).
 //! Projected bands use that variance times the measured ratio 1.50. The averages over many
 //! tiles, against the paper: 2D [`VARIANCE_2D`] (0.265, +2%), projected
-//! [`VARIANCE_PROJECTED`] (0.296, −1%), 3D [`VARIANCE_3D`] (0.210, −7%: two independent
-//! implementations of the paper's construction, this one and a numpy transcription with tiles
-//! of 16³ to 64³, agree on 0.196; see `tests/tests/wavelet.rs`).
+//! [`VARIANCE_PROJECTED`] (0.296, −1%), 3D [`VARIANCE_3D`] (0.210, −7%). The paper's 3D
+//! figure is that of its printed generator taken literally: `if (n/2) n++` (erratum 1) turns a
+//! requested 64³ tile into an odd 65³ one, whose coarse part is not fully removed, and a
+//! transcription of that code gives 0.209–0.211; the same transcription with an even tile gives
+//! 0.193–0.198, as bandnoise does (`tests/tests/wavelet.rs`).
 
 use heapless::Vec;
 
@@ -24,8 +26,8 @@ use super::erf::erf;
 /// Average variance of one 2D band over many tiles (measured: 24 tiles of 64²; the paper gives
 /// 0.265).
 pub const VARIANCE_2D: f32 = 0.270;
-/// Average variance of one 3D band over many tiles (measured: 24 tiles of 32³; the paper gives
-/// 0.210, which two independent implementations of its construction do not reproduce).
+/// Average variance of one 3D band over many tiles (measured: 24 tiles of 32³; the paper's
+/// 0.210 is that of the odd 65³ tile its printed code builds, see the module docs).
 pub const VARIANCE_3D: f32 = 0.1955;
 /// Average variance of one 3D band projected onto a plane, over random normals (measured: 1.50
 /// times the 3D variance; the paper gives 0.296).
