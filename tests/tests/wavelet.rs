@@ -593,9 +593,9 @@ mod printed {
             1.0 / 120.0,
         ];
         let mut total = 0.0;
-        for dz in 0..5 {
-            for dy in 0..5 {
-                for dx in 0..5 {
+        for (dz, gz) in G.iter().enumerate() {
+            for (dy, gy) in G.iter().enumerate() {
+                for (dx, gx) in G.iter().enumerate() {
                     let mut c = 0.0;
                     for z in 0..n {
                         for y in 0..n {
@@ -609,7 +609,7 @@ mod printed {
                             }
                         }
                     }
-                    total += G[dx] * G[dy] * G[dz] * c / (n * n * n) as f64;
+                    total += gx * gy * gz * c / (n * n * n) as f64;
                 }
             }
         }
