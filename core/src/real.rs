@@ -23,11 +23,38 @@ use core::ops::{Add, Mul, Neg, Sub};
 
 pub use fixed::types::I16F16;
 
-mod sealed {
-    pub trait Sealed {}
-    impl Sealed for f32 {}
-    impl Sealed for f64 {}
-    impl Sealed for fixed::types::I16F16 {}
+/// The supertrait that seals [`Real`]; it also carries what only the kernels may call.
+pub(crate) mod sealed {
+    use fixed::types::I16F16;
+
+    pub trait Sealed: Sized {
+        /// `self · unit` for `unit` ∈ {−1, 0, 1}: exact, and a gradient component of those
+        /// values costs one instruction. Floats multiply (with an FPU, one instruction that
+        /// reads the unit from a table); fixed point multiplies the bits by `unit`'s integer
+        /// part (a 32-bit multiply, where `mul_rn` needs 64 bits and a rounding). Other units
+        /// are never passed (the callers' tables hold only these three).
+        fn mul_unit(self, unit: Self) -> Self;
+    }
+    impl Sealed for f32 {
+        #[inline]
+        fn mul_unit(self, unit: Self) -> Self {
+            self * unit
+        }
+    }
+    impl Sealed for f64 {
+        #[inline]
+        fn mul_unit(self, unit: Self) -> Self {
+            self * unit
+        }
+    }
+    impl Sealed for I16F16 {
+        #[inline]
+        fn mul_unit(self, unit: Self) -> Self {
+            // unit's bits are ±2^16 or 0: `>> 16` gives ±1 or 0. The kernels pass fractions in
+            // (−2, 2), so the product cannot wrap.
+            I16F16::from_bits(self.to_bits().wrapping_mul(unit.to_bits() >> 16))
+        }
+    }
 }
 
 /// The arithmetic the noises need, for `f32`, `f64` and [`I16F16`].
@@ -65,6 +92,8 @@ pub trait Real:
     const ZERO: Self;
     /// 1.
     const ONE: Self;
+    /// −1.
+    const NEG_ONE: Self;
     /// The largest finite value.
     const MAX: Self;
 
@@ -167,6 +196,7 @@ macro_rules! impl_real_float {
         impl Real for $t {
             const ZERO: Self = 0.0;
             const ONE: Self = 1.0;
+            const NEG_ONE: Self = -1.0;
             const MAX: Self = <$t>::MAX;
 
             #[inline]
@@ -333,6 +363,7 @@ fn isqrt(v: u64) -> u64 {
 impl Real for I16F16 {
     const ZERO: Self = I16F16::ZERO;
     const ONE: Self = I16F16::ONE;
+    const NEG_ONE: Self = I16F16::NEG_ONE;
     const MAX: Self = I16F16::MAX;
 
     #[inline]
@@ -433,7 +464,41 @@ impl Real for I16F16 {
 
 #[cfg(test)]
 mod tests {
+    use super::sealed::Sealed;
     use super::*;
+
+    /// `mul_unit` by −1, 0 and 1 equals `mul_rn` (as numbers) over the range the kernels pass.
+    fn mul_unit_is_mul_rn<R: Real>(values: impl Iterator<Item = R>) {
+        for x in values {
+            for unit in [R::NEG_ONE, R::ZERO, R::ONE] {
+                assert_eq!(
+                    x.mul_unit(unit).canonical(),
+                    x.mul_rn(unit).canonical(),
+                    "{x:?} · {unit:?}"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn mul_unit_multiplies_by_units_exactly() {
+        let fractions = (-2000..=2000).map(|i| i as f64 / 1000.0 + 1e-7);
+        mul_unit_is_mul_rn(fractions.clone());
+        mul_unit_is_mul_rn(fractions.clone().map(|x| x as f32));
+        mul_unit_is_mul_rn(fractions.map(I16F16::from_num));
+        mul_unit_is_mul_rn(
+            [
+                I16F16::from_bits(1),
+                I16F16::from_bits(-1),
+                I16F16::from_bits(0x1_ffff),
+            ]
+            .into_iter(),
+        );
+        assert_eq!(
+            I16F16::from_num(0.75).mul_unit(I16F16::NEG_ONE),
+            I16F16::from_num(-0.75)
+        );
+    }
 
     #[test]
     fn split_floats_edges() {
