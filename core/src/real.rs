@@ -28,25 +28,46 @@ pub(crate) mod sealed {
     use fixed::types::I16F16;
 
     pub trait Sealed: Sized {
-        /// `self · unit` for `unit` ∈ {−1, 0, 1}: exact, and a gradient component of those
-        /// values costs one instruction. Floats multiply (with an FPU, one instruction that
-        /// reads the unit from a table); fixed point multiplies the bits by `unit`'s integer
-        /// part (a 32-bit multiply, where `mul_rn` needs 64 bits and a rounding). Other units
-        /// are never passed (the callers' tables hold only these three).
+        /// `self · unit` for `unit` ∈ {−1, 0, 1}, exact (up to the sign of a zero), for gradient
+        /// components read from a table. Floats multiply where there is an FPU (one instruction
+        /// that reads the unit from the table) and flip or clear the sign bits where floats are
+        /// emulated; fixed point multiplies the bits by `unit`'s integer part (a 32-bit
+        /// multiply, where `mul_rn` needs 64 bits and a rounding). Other units are never passed
+        /// (the callers' tables hold only these three).
         fn mul_unit(self, unit: Self) -> Self;
     }
-    impl Sealed for f32 {
-        #[inline]
-        fn mul_unit(self, unit: Self) -> Self {
-            self * unit
-        }
+    /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
+    /// without F): there a multiplication is a library call, and integer operations on the
+    /// bits are cheaper.
+    const SOFT_FLOAT: bool = cfg!(any(
+        all(target_arch = "arm", not(target_abi = "eabihf")),
+        all(
+            any(target_arch = "riscv32", target_arch = "riscv64"),
+            not(target_feature = "f")
+        )
+    ));
+
+    macro_rules! mul_unit_float {
+        ($t:ty, $bits:ty) => {
+            impl Sealed for $t {
+                #[inline]
+                fn mul_unit(self, unit: Self) -> Self {
+                    if SOFT_FLOAT {
+                        // unit's sign flips self's; a zero unit clears it (+0.0, which differs
+                        // from self · 0 only in the sign of a zero).
+                        let u = unit.to_bits();
+                        let sign = u & !(<$bits>::MAX >> 1);
+                        let keep = if u << 1 == 0 { 0 } else { <$bits>::MAX };
+                        <$t>::from_bits((self.to_bits() ^ sign) & keep)
+                    } else {
+                        self * unit
+                    }
+                }
+            }
+        };
     }
-    impl Sealed for f64 {
-        #[inline]
-        fn mul_unit(self, unit: Self) -> Self {
-            self * unit
-        }
-    }
+    mul_unit_float!(f32, u32);
+    mul_unit_float!(f64, u64);
     impl Sealed for I16F16 {
         #[inline]
         fn mul_unit(self, unit: Self) -> Self {
