@@ -157,16 +157,36 @@ pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize, con
         }
         out
     } else {
-        let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
-        let h = lattice.corner_hashes_lanes(cell);
-        for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
-            for (l, vml) in vm.iter_mut().enumerate() {
-                *vml = lattice.dot(h[m][l], &offset(m, l));
-            }
-        }
-        interpolate_lanes(&mut v, s);
-        v[0].map(R::canonical)
+        gradient_lanes_per_lane::<L, R, D, ROW>(lattice, cell, f, s)
     }
+}
+
+/// The path of [`gradient_lanes`] for lanes in several cells: one hash chain and one gradient
+/// per lane. Kept out of line so that its code does not change how the compiler lays out the
+/// one-cell path (inlined, it cost the 2D grid kernel 4 instructions per sample); one call per
+/// chunk of 16 lanes costs next to nothing.
+#[inline(never)]
+fn gradient_lanes_per_lane<L: GradientLattice<D>, R: Real, const D: usize, const ROW: bool>(
+    lattice: &L,
+    cell: &[[i32; LANES]; D],
+    f: &[[R; LANES]; D],
+    s: &[[R; LANES]; D],
+) -> [R; LANES] {
+    let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
+    let at = |a: usize, l: usize| if ROW && a > 0 { 0 } else { l };
+    let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
+    let h = lattice.corner_hashes_lanes(cell);
+    for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
+        for (l, vml) in vm.iter_mut().enumerate() {
+            let d: [R; D] = core::array::from_fn(|a| {
+                let l = at(a, l);
+                if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
+            });
+            *vml = lattice.dot(h[m][l], &d);
+        }
+    }
+    interpolate_lanes(&mut v, s);
+    v[0].map(R::canonical)
 }
 
 /// [`Noise::fill_grid`](crate::Noise::fill_grid) for a gradient lattice: column chunks of
