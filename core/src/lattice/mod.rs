@@ -128,14 +128,6 @@ pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize, con
     f: &[[R; LANES]; D],
     s: &[[R; LANES]; D],
 ) -> [R; LANES] {
-    let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
-    let at = |a: usize, l: usize| if ROW && a > 0 { 0 } else { l };
-    let offset = |m: usize, l: usize| -> [R; D] {
-        core::array::from_fn(|a| {
-            let l = at(a, l);
-            if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
-        })
-    };
     if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
         // Every lane in one cell (a grid finer than LANES samples per cell, along a row): hash
         // the corners and look up their gradients once; then each lane runs the point
@@ -146,19 +138,48 @@ pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize, con
         for (m, gm) in g.iter_mut().enumerate().take(1 << D) {
             *gm = lattice.gradient(h[m]);
         }
+        let f1 = minus_one_lanes(f);
         let mut out = [R::ZERO; LANES];
         for (l, o) in out.iter_mut().enumerate() {
             let mut v = [R::ZERO; MAX_CORNERS];
             for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
-                *vm = lattice.dot_with(&g[m], &offset(m, l));
+                *vm = lattice.dot_with(&g[m], &lane_offset::<R, D, ROW>(f, &f1, m, l));
             }
-            let t: [R; D] = core::array::from_fn(|a| s[a][at(a, l)]);
+            let t: [R; D] = core::array::from_fn(|a| s[a][lane_at::<ROW>(a, l)]);
             *o = interpolate(v, &t).canonical();
         }
         out
     } else {
         gradient_lanes_per_lane::<L, R, D, ROW>(lattice, cell, f, s)
     }
+}
+
+/// `f − 1` for every lane's fractions.
+#[inline]
+fn minus_one_lanes<R: Real, const D: usize>(f: &[[R; LANES]; D]) -> [[R; LANES]; D] {
+    f.map(|fa| fa.map(|x| x - R::ONE))
+}
+
+/// The lane to read along axis `a` for lane `l`: lane 0 off axis 0 when `ROW` promises that
+/// every lane holds the same numbers there (see [`gradient_lanes`]).
+#[inline]
+fn lane_at<const ROW: bool>(a: usize, l: usize) -> usize {
+    if ROW && a > 0 { 0 } else { l }
+}
+
+/// [`corner_offset`] for lane `l`: the offset from corner `m` to the lane's point, given the
+/// lanes' fractions `f` and `f1 = f − 1`.
+#[inline]
+fn lane_offset<R: Real, const D: usize, const ROW: bool>(
+    f: &[[R; LANES]; D],
+    f1: &[[R; LANES]; D],
+    m: usize,
+    l: usize,
+) -> [R; D] {
+    core::array::from_fn(|a| {
+        let l = lane_at::<ROW>(a, l);
+        if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
+    })
 }
 
 /// The path of [`gradient_lanes`] for lanes in several cells: one hash chain and one gradient
@@ -172,17 +193,12 @@ fn gradient_lanes_per_lane<L: GradientLattice<D>, R: Real, const D: usize, const
     f: &[[R; LANES]; D],
     s: &[[R; LANES]; D],
 ) -> [R; LANES] {
-    let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
-    let at = |a: usize, l: usize| if ROW && a > 0 { 0 } else { l };
+    let f1 = minus_one_lanes(f);
     let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
     let h = lattice.corner_hashes_lanes(cell);
     for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
         for (l, vml) in vm.iter_mut().enumerate() {
-            let d: [R; D] = core::array::from_fn(|a| {
-                let l = at(a, l);
-                if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
-            });
-            *vml = lattice.dot(h[m][l], &d);
+            *vml = lattice.dot(h[m][l], &lane_offset::<R, D, ROW>(f, &f1, m, l));
         }
     }
     interpolate_lanes(&mut v, s);
