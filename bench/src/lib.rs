@@ -81,6 +81,20 @@ fn point3<No: Noise<f32, 3> + 'static>(noise: No) -> Run {
     Box::new(move |rows, out| points2(rows, out, |x, y| noise.sample([x, y, Z])))
 }
 
+/// A libnoise generator over the 2D grid (libnoise computes in f64).
+fn libnoise2<G: libnoise::Generator<2> + 'static>(n: G) -> Run {
+    Box::new(move |rows, out| points2(rows, out, |x, y| n.sample([x as f64, y as f64]) as f32))
+}
+
+/// A libnoise generator over the 3D grid's plane `z = Z`.
+fn libnoise3<G: libnoise::Generator<3> + 'static>(n: G) -> Run {
+    Box::new(move |rows, out| {
+        points2(rows, out, |x, y| {
+            n.sample([x as f64, y as f64, Z as f64]) as f32
+        })
+    })
+}
+
 /// The workload `function` by `implementation`, if that implementation has it.
 #[must_use]
 pub fn workload(function: &str, implementation: &str) -> Option<Run> {
@@ -176,38 +190,16 @@ pub fn workload(function: &str, implementation: &str) -> Option<Run> {
             Box::new(move |rows, out| points2(rows, out, |x, y| n.sample3([x, y, Z])))
         }
 
-        ("perlin-2d", "libnoise") => {
-            let n = libnoise::Source::<2>::perlin(0);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    libnoise::Generator::sample(&n, [x as f64, y as f64]) as f32
-                })
-            })
-        }
-        ("perlin-3d", "libnoise") => {
-            let n = libnoise::Source::<3>::perlin(0);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    libnoise::Generator::sample(&n, [x as f64, y as f64, Z as f64]) as f32
-                })
-            })
-        }
-        ("value-2d", "libnoise") => {
-            let n = libnoise::Source::<2>::value(0);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    libnoise::Generator::sample(&n, [x as f64, y as f64]) as f32
-                })
-            })
-        }
-        ("fbm6-perlin-3d", "libnoise") => {
-            let n = libnoise::Generator::fbm(libnoise::Source::<3>::perlin(0), 6, 1.0, 2.0, 0.5);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    libnoise::Generator::sample(&n, [x as f64, y as f64, Z as f64]) as f32
-                })
-            })
-        }
+        ("perlin-2d", "libnoise") => libnoise2(libnoise::Source::<2>::perlin(0)),
+        ("perlin-3d", "libnoise") => libnoise3(libnoise::Source::<3>::perlin(0)),
+        ("value-2d", "libnoise") => libnoise2(libnoise::Source::<2>::value(0)),
+        ("fbm6-perlin-3d", "libnoise") => libnoise3(libnoise::Generator::fbm(
+            libnoise::Source::<3>::perlin(0),
+            6,
+            1.0,
+            2.0,
+            0.5,
+        )),
         _ => return None,
     };
     Some(run)
