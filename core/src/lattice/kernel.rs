@@ -133,6 +133,20 @@ pub(crate) fn corner_offset<R: Real, const D: usize>(f: &[R; D], f1: &[R; D], m:
     d
 }
 
+/// `Σ_a d_a·g_a` in axis order, each product by `mul`.
+#[inline]
+pub(crate) fn sum_of_products<R: Real, const D: usize>(
+    d: &[R; D],
+    g: &[R; D],
+    mul: impl Fn(R, R) -> R,
+) -> R {
+    let mut sum = mul(d[0], g[0]);
+    for a in 1..D {
+        sum = sum + mul(d[a], g[a]);
+    }
+    sum
+}
+
 /// `f − 1` for every fraction.
 #[inline]
 pub(crate) fn minus_one<R: Real, const D: usize>(f: &[R; D]) -> [R; D] {

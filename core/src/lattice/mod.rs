@@ -61,11 +61,7 @@ pub(crate) trait GradientLattice<const D: usize> {
     /// sampling canonicalises; the batch test checks the results bit for bit.
     #[inline]
     fn dot_with<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
-        let mut sum = d[0].mul_rn(g[0]);
-        for a in 1..D {
-            sum = sum + d[a].mul_rn(g[a]);
-        }
-        sum
+        kernel::sum_of_products(d, g, R::mul_rn)
     }
 
     /// [`corner_hashes`](Self::corner_hashes) of every lane's cell, as `h[corner][lane]`.

@@ -5,7 +5,7 @@
 //! repeated to make 16) exactly as in Perlin's reference `grad`, so that with seed 0 the f64 noise
 //! reproduces his reference values bit for bit.
 
-use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first};
+use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first, sum_of_products};
 use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
 use crate::Real;
 use crate::hash::Permutation;
@@ -98,7 +98,10 @@ const GRAD3: [[i8; 3]; 16] = [
 ];
 
 /// [`GRAD3`] in the number type `R`, built at compile time, so a gradient component is one
-/// load (no conversion) that a multiplication can take as its memory operand.
+/// load (no conversion) that a multiplication can take as its memory operand. 2D and 3D take
+/// their dot products with these rows through `mul_unit` (branch-free, where `grad3`'s
+/// data-dependent choices cost about three times as many instructions); the value is
+/// `grad3`'s but for the sign of a zero, which sampling canonicalises.
 struct Grad3<R>(core::marker::PhantomData<R>);
 
 impl<R: Real> Grad3<R> {
@@ -119,21 +122,6 @@ impl<R: Real> Grad3<R> {
         }
         table
     };
-}
-
-/// The dot product of `d` with the gradient `h` selects from [`GRAD3`] (its first `D`
-/// components): the value of Perlin's `grad(h, x, y, z)` (with the missing coordinates 0) but
-/// for the sign of a zero, which sampling canonicalises. Branch-free: one load and one
-/// `mul_unit` per component, where `grad3`'s
-/// data-dependent choices cost about three times as many instructions.
-#[inline]
-fn dot_table<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
-    let g = &Grad3::<R>::TABLE[(h & 15) as usize];
-    let mut sum = d[0].mul_unit(g[0]);
-    for a in 1..D {
-        sum = sum + d[a].mul_unit(g[a]);
-    }
-    sum
 }
 
 impl GradientLattice<1> for Perlin {
@@ -158,7 +146,11 @@ impl GradientLattice<2> for Perlin {
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 2]) -> R {
-        dot_table(h, d)
+        self.dot_with(&self.gradient(h), d)
+    }
+    #[inline]
+    fn dot_with<R: Real>(&self, g: &[R; 2], d: &[R; 2]) -> R {
+        sum_of_products(d, g, R::mul_unit)
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 2] {
@@ -174,7 +166,11 @@ impl GradientLattice<3> for Perlin {
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {
-        dot_table(h, d)
+        self.dot_with(&self.gradient(h), d)
+    }
+    #[inline]
+    fn dot_with<R: Real>(&self, g: &[R; 3], d: &[R; 3]) -> R {
+        sum_of_products(d, g, R::mul_unit)
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 3] {
