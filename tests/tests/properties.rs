@@ -81,12 +81,53 @@ proptest! {
     #[test]
     fn different_seeds_are_decorrelated(i in 0usize..6, s1 in any::<u32>(), s2 in any::<u32>()) {
         prop_assume!(s1 != s2);
-        let (a, b) = (noise(i, s1), noise(i, s2));
-        let grid = |n: &Lattice| -> Vec<f64> {
-            (0..128 * 128).map(|k| n.sample([(k % 128) as f64 * 0.71 + 0.1, (k / 128) as f64 * 0.71 + 0.2])).collect()
-        };
-        let r = correlation(&grid(&a), &grid(&b));
-        // 128² samples over ~90² cells: the estimate's spread is about 0.02 (0.03 for M = 61).
+        // mNoise with M = 61 has too few seeded noises for this to hold for every pair: see
+        // `mnoise61_seeds_are_decorrelated_but_for_nearby_translations`.
+        prop_assume!(Lattice::all(0)[i].0 != "mnoise61");
+        let r = correlation(&seed_grid(&noise(i, s1)), &seed_grid(&noise(i, s2)));
+        // 128² samples over ~90² cells: the estimate's spread is about 0.02.
         prop_assert!(r.abs() < 0.1, "correlation {}", r);
     }
+}
+
+/// The 2D grid the seed tests sample: 128² points over about 90² cells.
+fn seed_grid(n: &Lattice) -> Vec<f64> {
+    (0..128 * 128)
+        .map(|k| n.sample([(k % 128) as f64 * 0.71 + 0.1, (k / 128) as f64 * 0.71 + 0.2]))
+        .collect()
+}
+
+#[test]
+fn mnoise61_seeds_are_decorrelated_but_for_nearby_translations() {
+    // A seed of MNoise<61> is a translation in [0, 61)^4 and a sign mask, so two seeds are
+    // translated copies of one noise, and correlate when their translations lie within about
+    // a cell of each other mod 61 (measured over 2000 pairs: rms 0.023, 0.85% of pairs at
+    // |r| >= 0.1, the worst 0.27; 2229309011 and 3232270671 give 0.10). There are only 14884
+    // distinct 2D noises, so now and then a pair is the same noise (r = 1). Asserted: the typical
+    // pair is decorrelated (median), and correlated pairs stay rare (at most 2.5%).
+    let index = Lattice::all(0)
+        .iter()
+        .position(|(name, _)| *name == "mnoise61")
+        .unwrap();
+    let mut rng = bandnoise_tests::Rng::from_env(61);
+    let pairs = 400;
+    let r: Vec<f64> = (0..pairs)
+        .map(|_| {
+            let (s1, s2) = (rng.next_u64() as u32, rng.next_u64() as u32);
+            correlation(&seed_grid(&noise(index, s1)), &seed_grid(&noise(index, s2)))
+        })
+        .collect();
+    let mut abs: Vec<f64> = r.iter().map(|r| r.abs()).collect();
+    abs.sort_by(f64::total_cmp);
+    let (median, worst) = (abs[pairs / 2], abs[pairs - 1]);
+    let high = abs.iter().filter(|&&r| r >= 0.1).count();
+    println!(
+        "MNoise<61>, {pairs} seed pairs: median |r| {median:.4}, worst {worst:.3}, {high} at |r| >= 0.1"
+    );
+    // A spread of 0.025 puts the median |r| of unrelated pairs near 0.017.
+    assert!(median < 0.03, "median |correlation| {median}");
+    assert!(
+        high <= pairs / 40,
+        "{high} of {pairs} pairs correlate at 0.1 or more"
+    );
 }
