@@ -70,8 +70,8 @@ pub fn to_f64<const D: usize>(p: [I16F16; D]) -> [f64; D] {
 /// Every lattice noise of the kernel, so a test can loop over all of them.
 #[derive(Clone, Debug)]
 pub enum Lattice {
-    /// Perlin's improved noise.
-    Perlin(Perlin),
+    /// Perlin's improved noise (boxed: its doubled permutation is 512 bytes).
+    Perlin(Box<Perlin>),
     /// Perlin's original noise.
     Original(OriginalPerlin),
     /// Value noise.
@@ -88,7 +88,7 @@ impl Lattice {
     /// Every lattice noise for `seed`, with its name.
     pub fn all(seed: u32) -> Vec<(&'static str, Lattice)> {
         vec![
-            ("perlin", Lattice::Perlin(Perlin::new(seed))),
+            ("perlin", Lattice::Perlin(Box::new(Perlin::new(seed)))),
             ("original", Lattice::Original(OriginalPerlin::new(seed))),
             ("value", Lattice::Value(ValueNoise::new(seed))),
             ("cnoise", Lattice::C(CNoise::new(seed))),
@@ -109,7 +109,10 @@ impl Lattice {
 macro_rules! delegate {
     ($self:ident, $n:ident => $e:expr) => {
         match $self {
-            Lattice::Perlin($n) => $e,
+            Lattice::Perlin($n) => {
+                let $n: &Perlin = $n;
+                $e
+            }
             Lattice::Original($n) => $e,
             Lattice::Value($n) => $e,
             Lattice::C($n) => $e,

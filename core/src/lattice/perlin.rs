@@ -6,7 +6,9 @@
 //! reproduces his reference values bit for bit.
 
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first, sum_of_products};
-use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+use super::perlin_sse2;
+use super::{GradientLattice, gradient_noise_impls, half_dims, sample_gradient, signed};
 use crate::Real;
 use crate::hash::Permutation;
 
@@ -33,9 +35,11 @@ use crate::hash::Permutation;
 /// let fixed: I16F16 = p.sample([I16F16::from_num(3.14), I16F16::from_num(42), I16F16::from_num(7)]);
 /// assert!((fixed.to_num::<f64>() - 0.136919958784).abs() < 1e-3);
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, PartialEq, Eq)]
 pub struct Perlin {
-    perm: Permutation,
+    /// The seed's [`Permutation`] repeated twice, as in Perlin's reference code (`p[i + 256] =
+    /// p[i]`): the hash chain's indices `p[x] + y + 1` stay below 512 without a `& 255`.
+    p: [u8; 512],
 }
 
 impl Perlin {
@@ -43,16 +47,59 @@ impl Perlin {
     /// `static NOISE: Perlin = Perlin::new(7);` builds the table at compile time.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        Self {
-            perm: Permutation::new(seed),
+        let perm = Permutation::new(seed);
+        let table = perm.table();
+        let mut p = [0u8; 512];
+        let mut i = 0;
+        while i < 512 {
+            p[i] = table[i & 255];
+            i += 1;
         }
+        Self { p }
+    }
+
+    /// The doubled permutation (for the SSE2 kernel's test).
+    #[cfg(all(test, target_arch = "x86_64", target_feature = "sse2"))]
+    pub(super) fn doubled(&self) -> &[u8; 512] {
+        &self.p
     }
 
     #[inline]
     fn corners<const D: usize>(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let cells = cell.map(|c| (c & 255) as u32);
-        hash_corners_x_first(cells, 0, |h, c| self.perm.get(h + c))
+        // h < 256 (a table entry) and c ≤ 256: the index is below 512.
+        hash_corners_x_first(cells, 0, |h, c| u32::from(self.p[(h + c) as usize]))
     }
+}
+
+impl core::fmt::Debug for Perlin {
+    /// The permutation, once.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("Perlin")
+            .field("perm", &&self.p[..256])
+            .finish()
+    }
+}
+
+/// `f32`, seen as `R`, when `R` is `f32`: the point kernels with a vector version for `f32`
+/// only take it this way (the comparison of type ids is a constant; the conversions are the
+/// identity).
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[inline]
+fn as_f32<R: Real, const D: usize>(p: [R; D]) -> Option<[f32; D]> {
+    (core::any::TypeId::of::<R>() == core::any::TypeId::of::<f32>()).then(|| p.map(R::to_f32))
+}
+
+/// The shared kernel in `f32`, for the coordinates the SSE2 kernel leaves to it (beyond ±2²²,
+/// or not finite): out of line, so that the vector kernel stays small enough to inline.
+#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+#[cold]
+#[inline(never)]
+fn shared_kernel<const D: usize>(perlin: &Perlin, p: [f32; D]) -> f32
+where
+    Perlin: GradientLattice<D>,
+{
+    sample_gradient(perlin, p)
 }
 
 impl Default for Perlin {
@@ -78,7 +125,7 @@ fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
 
 /// The gradient Perlin's reference `grad(hash, x, y, z)` dots with for `hash & 15`: the 12
 /// edges of the cube and 4 of them repeated (checked against `grad3` by a test).
-const GRAD3: [[i8; 3]; 16] = [
+pub(super) const GRAD3: [[i8; 3]; 16] = [
     [1, 1, 0],
     [-1, 1, 0],
     [1, -1, 0],
@@ -145,6 +192,15 @@ impl GradientLattice<2> for Perlin {
         self.corners(cell)
     }
     #[inline]
+    fn sample_point<R: Real>(&self, p: [R; 2]) -> R {
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        if let Some([x, y]) = as_f32(p) {
+            let v = perlin_sse2::Kernel(&self.p).sample2(x, y);
+            return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y])));
+        }
+        sample_gradient(self, p)
+    }
+    #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 2]) -> R {
         self.dot_with(&self.gradient(h), d)
     }
@@ -163,6 +219,15 @@ impl GradientLattice<3> for Perlin {
     type Fade = Quintic;
     fn corner_hashes(&self, cell: [i32; 3]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
+    }
+    #[inline]
+    fn sample_point<R: Real>(&self, p: [R; 3]) -> R {
+        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+        if let Some([x, y, z]) = as_f32(p) {
+            let v = perlin_sse2::Kernel(&self.p).sample3(x, y, z);
+            return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y, z])));
+        }
+        sample_gradient(self, p)
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {

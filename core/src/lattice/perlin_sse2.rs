@@ -1,0 +1,303 @@
+//! Perlin's improved noise at one point in 2D and 3D with SSE2 (x86-64), in `f32`: the axes
+//! split and faded together, and the 4 (2D) or 8 (3D) corner dot products and the first
+//! interpolation step in 4-lane vectors. The point kernel of [`sample_gradient`] does the same
+//! steps one number at a time.
+//!
+//! Every lane computes the operations of the shared kernel on the same numbers in the same order
+//! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
+//! bit; a test compares them over random and edge-case points. The intrinsics are the safe
+//! wrappers of `safe_arch` (this crate forbids `unsafe`).
+//!
+//! [`sample_gradient`]: super::sample_gradient
+
+use safe_arch::{
+    add_i32_m128i, add_m128, add_m128_s, bitandnot_m128, cast_to_m128_from_m128i,
+    cast_to_m128i_from_m128, cmp_eq_mask_i32_m128i, cmp_ge_mask_m128, cmp_gt_mask_m128,
+    convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
+    get_i32_from_m128i_s, load_unaligned_m128, m128, move_high_low_m128, move_low_high_m128,
+    move_mask_m128, mul_m128, mul_m128_s, set_splat_i32_m128i, set_splat_m128,
+    shuffle_abi_f32_all_m128, sub_i32_m128i, sub_m128, sub_m128_s, truncate_m128_to_m128i,
+    unpack_high_m128, unpack_low_m128, zeroed_m128,
+};
+
+use super::perlin::GRAD3;
+
+/// Perlin's doubled permutation (see [`Perlin`](super::Perlin)): `p[p[x] + y]` and `p[… + 1]`
+/// need no `& 255`, every index the hash chain forms being at most 255 + 256.
+pub(super) struct Kernel<'a>(pub(super) &'a [u8; 512]);
+
+impl Kernel<'_> {
+    /// Perlin's `p[i]` for `i < 512`.
+    #[inline]
+    fn p(&self, i: usize) -> usize {
+        usize::from(self.0[i])
+    }
+
+    /// The gradient of corner hash input `i`, as a vector `(g_x, g_y, g_z, 0)`.
+    #[inline]
+    fn gradient(&self, i: usize) -> m128 {
+        load_unaligned_m128(&ROWS.0[self.p(i)])
+    }
+
+    /// The noise at `(x, y)`, or `None` outside the vector path's range.
+    #[inline]
+    pub(super) fn sample2(&self, x: f32, y: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(m128::from_array([x, y, 0.0, 0.0]), 0b11)?;
+        let [cx, cy, _] = cell;
+        // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j].
+        let a = self.p(cx) + cy;
+        let b = self.p(cx + 1) + cy;
+        let (g0, g1, g2, g3) = (
+            self.gradient(a),
+            self.gradient(b),
+            self.gradient(a + 1),
+            self.gradient(b + 1),
+        );
+        let (dx, dy, _, _) = offsets(f);
+        // Corner m's dot product in lane m: g_x·d_x + g_y·d_y.
+        let l01 = unpack_low_m128(g0, g1); // g0x g1x g0y g1y
+        let l23 = unpack_low_m128(g2, g3);
+        let gx = move_low_high_m128(l01, l23);
+        let gy = move_high_low_m128(l23, l01);
+        let v = add_m128(mul_m128(dx, gx), mul_m128(dy, gy));
+        // Along x: (v0, v1) and (v2, v3) in lanes 0 and 1.
+        let r = lerp_pairs(v, v, splat::<0b00_00_00_00>(s));
+        Some(finish(r, splat::<0b01_01_01_01>(s)))
+    }
+
+    /// The noise at `(x, y, z)`, or `None` outside the vector path's range.
+    #[inline]
+    pub(super) fn sample3(&self, x: f32, y: f32, z: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(m128::from_array([x, y, z, 0.0]), 0b111)?;
+        let [cx, cy, cz] = cell;
+        // Perlin's chain, x innermost: corner (i, j, k) hashes p[p[p[x + i] + y + j] + z + k].
+        let a = self.p(cx) + cy;
+        let b = self.p(cx + 1) + cy;
+        let (aa, ab) = (self.p(a) + cz, self.p(a + 1) + cz);
+        let (ba, bb) = (self.p(b) + cz, self.p(b + 1) + cz);
+        let (dx, dy, dz0, dz1) = offsets(f);
+        // Corners 0–3 (z = 0) and 4–7 (z = 1), corner m in lane m & 3.
+        let lo = dots3(
+            [
+                self.gradient(aa),
+                self.gradient(ba),
+                self.gradient(ab),
+                self.gradient(bb),
+            ],
+            dx,
+            dy,
+            dz0,
+        );
+        let hi = dots3(
+            [
+                self.gradient(aa + 1),
+                self.gradient(ba + 1),
+                self.gradient(ab + 1),
+                self.gradient(bb + 1),
+            ],
+            dx,
+            dy,
+            dz1,
+        );
+        // Along x: the four pairs (v0, v1), (v2, v3), (v4, v5), (v6, v7).
+        let r = lerp_pairs(lo, hi, splat::<0b00_00_00_00>(s));
+        // Along y: (r0, r1) and (r2, r3) in lanes 0 and 1.
+        let q = lerp_pairs(r, r, splat::<0b01_01_01_01>(s));
+        Some(finish(q, splat::<0b10_10_10_10>(s)))
+    }
+}
+
+/// The gradient of every permutation value `h` (row `GRAD3[h & 15]`) as `f32` padded to four
+/// lanes: one aligned 16-byte load per corner, indexed by the permutation's byte itself
+/// (4 KiB, shared by every seed).
+#[repr(align(16))]
+struct Rows([[f32; 4]; 256]);
+
+static ROWS: Rows = {
+    let mut rows = [[0.0f32; 4]; 256];
+    let mut i = 0;
+    while i < 256 {
+        let mut a = 0;
+        while a < 3 {
+            rows[i][a] = GRAD3[i & 15][a] as f32;
+            a += 1;
+        }
+        i += 1;
+    }
+    Rows(rows)
+};
+
+/// Lane `L` of `v` in every lane (`MASK` repeats `L` four times).
+#[inline]
+fn splat<const MASK: i32>(v: m128) -> m128 {
+    shuffle_abi_f32_all_m128::<MASK>(v, v)
+}
+
+/// [`Real::split`](crate::Real::split) of the lanes `axes` selects (a bit per lane), and the
+/// quintic fade of the fractions: the cells reduced mod 256, the fractions and the faded
+/// fractions; `None` if a coordinate is outside `(−2^31, 2^31)` or not finite (there the
+/// truncating conversion gives its "invalid" value −2^31, in which case the shared kernel
+/// decides; −2^31 itself goes there too).
+///
+/// The fraction of `−0.0` stays `−0.0` here (the shared kernel adds `+0.0`); that changes at
+/// most the sign of a zero in the sum, which [`finish`] canonicalises like the shared kernel.
+#[inline]
+fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
+    // floor: truncate, then one down where truncation rounded up (negative non-integers).
+    let t = truncate_m128_to_m128i(v);
+    let invalid = cmp_eq_mask_i32_m128i(t, set_splat_i32_m128i(i32::MIN));
+    if move_mask_m128(cast_to_m128_from_m128i(invalid)) & axes != 0 {
+        return None;
+    }
+    let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(t), v);
+    let cell = add_i32_m128i(t, cast_to_m128i_from_m128(above));
+    let f = sub_m128(v, convert_to_m128_from_i32_m128i(cell));
+    // A tiny negative coordinate's fraction rounds to 1: the next cell, fraction 0.
+    let one = set_splat_m128(1.0);
+    let up = cmp_ge_mask_m128(f, one);
+    let cell = sub_i32_m128i(cell, cast_to_m128i_from_m128(up));
+    let f = bitandnot_m128(up, f);
+    // Perlin's order: t·t·t·(t·(t·6 − 15) + 10).
+    let t3 = mul_m128(mul_m128(f, f), f);
+    let inner = sub_m128(mul_m128(f, set_splat_m128(6.0)), set_splat_m128(15.0));
+    let s = mul_m128(t3, add_m128(mul_m128(f, inner), set_splat_m128(10.0)));
+    let cells = [
+        get_i32_from_m128i_s(cell) as usize & 255,
+        extract_i16_as_i32_m128i::<2>(cell) as usize & 255,
+        extract_i16_as_i32_m128i::<4>(cell) as usize & 255,
+    ];
+    Some((cells, f, s))
+}
+
+/// The offsets from the corners to the point: `(f_x, f_x − 1, f_x, f_x − 1)`,
+/// `(f_y, f_y, f_y − 1, f_y − 1)`, and `f_z`, `f_z − 1` in every lane.
+#[inline]
+fn offsets(f: m128) -> (m128, m128, m128, m128) {
+    let f1 = sub_m128(f, set_splat_m128(1.0));
+    let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
+    (
+        shuffle_abi_f32_all_m128::<0b01_00_01_00>(u, u),
+        shuffle_abi_f32_all_m128::<0b11_11_10_10>(u, u),
+        splat::<0b10_10_10_10>(f),
+        splat::<0b10_10_10_10>(f1),
+    )
+}
+
+/// The dot products of four gradient rows with the offsets, in the shared kernel's order
+/// `(d_x·g_x + d_y·g_y) + d_z·g_z`, one corner per lane.
+#[inline]
+fn dots3(rows: [m128; 4], dx: m128, dy: m128, dz: m128) -> m128 {
+    let [r0, r1, r2, r3] = rows;
+    let l01 = unpack_low_m128(r0, r1); // g0x g1x g0y g1y
+    let h01 = unpack_high_m128(r0, r1); // g0z g1z 0 0
+    let l23 = unpack_low_m128(r2, r3);
+    let h23 = unpack_high_m128(r2, r3);
+    let gx = move_low_high_m128(l01, l23);
+    let gy = move_high_low_m128(l23, l01);
+    let gz = move_low_high_m128(h01, h23);
+    add_m128(
+        add_m128(mul_m128(dx, gx), mul_m128(dy, gy)),
+        mul_m128(dz, gz),
+    )
+}
+
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)` of the pairs `(lo0, lo1)`, `(lo2, lo3)`,
+/// `(hi0, hi1)`, `(hi2, hi3)`, in lanes 0–3.
+#[inline]
+fn lerp_pairs(lo: m128, hi: m128, t: m128) -> m128 {
+    let a = shuffle_abi_f32_all_m128::<0b10_00_10_00>(lo, hi);
+    let b = shuffle_abi_f32_all_m128::<0b11_01_11_01>(lo, hi);
+    add_m128(a, mul_m128(t, sub_m128(b, a)))
+}
+
+/// The last interpolation step, `lerp(t, v0, v1)`, then `+ 0.0` as
+/// [`Real::canonical`](crate::Real::canonical) does.
+#[inline]
+fn finish(v: m128, t: m128) -> f32 {
+    let v1 = splat::<0b01_01_01_01>(v);
+    let n = add_m128_s(v, mul_m128_s(t, sub_m128_s(v1, v)));
+    get_f32_from_m128_s(add_m128_s(n, zeroed_m128()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Kernel;
+    use crate::lattice::{Perlin, sample_gradient};
+
+    /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
+    /// and in the range where noise is usually sampled, with the edge cases of `split`.
+    fn points(n: usize) -> impl Iterator<Item = [f32; 3]> {
+        let mut state = 0x853c_49e6_748f_ea9b_u64;
+        let edges = [
+            0.0,
+            -0.0,
+            -1e-30,
+            1e-30,
+            -1e-8,
+            0.999_999_94,
+            -0.999_999_94,
+            255.5,
+            256.0,
+            -256.0,
+            4_194_303.5,
+            -4_194_303.5,
+            4_194_304.0,
+            -4_194_304.0,
+            2_147_483_520.0,
+            -2_147_483_520.0,
+            2_147_483_648.0,
+            -2_147_483_648.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MAX,
+            f32::MIN_POSITIVE,
+        ];
+        let edge_points = edges
+            .into_iter()
+            .flat_map(move |x| edges.into_iter().map(move |y| [x, y, -y]));
+        let random = core::iter::repeat_with(move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let bits = state;
+            let coordinate = |shift: u32| {
+                let v = (bits >> shift) as u32;
+                if bits & 1 == 0 {
+                    f32::from_bits(v)
+                } else {
+                    (v >> 8) as f32 / 65_536.0 - 128.0
+                }
+            };
+            [coordinate(0), coordinate(21), coordinate(42)]
+        });
+        edge_points.chain(random.take(n))
+    }
+
+    #[test]
+    fn vector_kernel_is_the_shared_kernel_bit_for_bit() {
+        for seed in [0, 1, 0xdead_beef] {
+            let perlin = Perlin::new(seed);
+            let tables = Kernel(perlin.doubled());
+            let mut vector_path = [0usize; 2];
+            for [x, y, z] in points(200_000) {
+                let expected2: f32 = sample_gradient(&perlin, [x, y]);
+                if let Some(v) = tables.sample2(x, y) {
+                    assert_eq!(
+                        v.to_bits(),
+                        expected2.to_bits(),
+                        "2D ({x}, {y}), seed {seed}"
+                    );
+                    vector_path[0] += 1;
+                }
+                let expected3: f32 = sample_gradient(&perlin, [x, y, z]);
+                if let Some(v) = tables.sample3(x, y, z) {
+                    assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
+                    vector_path[1] += 1;
+                }
+            }
+            // Half the random points are in range: the vector path was exercised.
+            assert!(vector_path.iter().all(|&n| n > 90_000), "{vector_path:?}");
+        }
+    }
+}
