@@ -144,7 +144,7 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
                 *x = grid.coordinate(0, c * LANES + l);
             }
             noise.sample_lanes(&lanes, &mut values);
-            chunk.copy_from_slice(&values[..chunk.len()]);
+            store_lanes(chunk, &values);
         }
     }
     Ok(())
@@ -170,9 +170,19 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
             lane[..chunk.len()].copy_from_slice(&axis[start..start + chunk.len()]);
         }
         noise.sample_lanes(&lanes, &mut values);
-        chunk.copy_from_slice(&values[..chunk.len()]);
+        store_lanes(chunk, &values);
     }
     Ok(())
+}
+
+/// Copies the first `out.len()` (at most [`LANES`]) values of `v`: a whole chunk as a copy of
+/// fixed size (a few vector moves, where a copy of variable length calls `memcpy`).
+#[inline]
+pub(crate) fn store_lanes<R: Real>(out: &mut [R], v: &[R; LANES]) {
+    match <&mut [R; LANES]>::try_from(&mut *out) {
+        Ok(whole) => *whole = *v,
+        Err(_) => out.copy_from_slice(&v[..out.len()]),
+    }
 }
 
 pub(crate) fn check_len(expected: usize, found: usize) -> Result<(), Error> {

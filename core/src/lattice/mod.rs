@@ -243,7 +243,7 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
                 (cell[a], f[a], s[a]) = ([c; LANES], [fa; LANES], [L::Fade::fade(fa); LANES]);
             }
             let v = gradient_lanes::<L, R, D, true>(lattice, &cell, &f, &s);
-            out[row * width + start..][..n].copy_from_slice(&v[..n]);
+            batch::store_lanes(&mut out[row * width + start..][..n], &v);
         }
     }
     Ok(())
