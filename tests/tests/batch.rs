@@ -57,8 +57,16 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
         assert_eq!(bits(*v), bits(noise.sample(p)), "{name} {D}D points: {p:?}");
     }
 
-    // Grids: a row that is not a multiple of LANES, a row shorter than LANES, and a far origin.
-    for (size0, far) in [(37, false), (5, false), (LANES, true)] {
+    // Grids: a row that is not a multiple of LANES, a row shorter than LANES, a far origin, and
+    // rows of several blocks of chunks, with steps that put a chunk's lanes in several cells
+    // and, finer than 1/16, in one cell.
+    for (size0, far, max_step) in [
+        (37, false, 0.7),
+        (5, false, 0.7),
+        (LANES, true, 0.7),
+        (150, false, 0.7),
+        (150, false, 0.06),
+    ] {
         let size: [usize; D] = core::array::from_fn(|a| if a == 0 { size0 } else { 3 });
         let origin = core::array::from_fn(|_| {
             R::from_f32(if far {
@@ -67,7 +75,7 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
                 rng.f64_in(-100.0, 100.0) as f32
             })
         });
-        let step = core::array::from_fn(|_| R::from_f32(rng.f64_in(-0.7, 0.7) as f32));
+        let step = core::array::from_fn(|_| R::from_f32(rng.f64_in(-max_step, max_step) as f32));
         let grid = Grid::new(origin, step, size);
         let mut out = vec![R::ZERO; grid.len()];
         noise.fill_grid(&grid, &mut out).unwrap();

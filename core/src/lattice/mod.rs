@@ -120,104 +120,104 @@ pub(crate) fn sample_gradient_lanes<L: GradientLattice<D>, R: Real, const D: usi
 ) {
     let (cell, f) = split_lanes(p);
     let s = f.map(|fa| fa.map(L::Fade::fade));
-    *out = gradient_lanes::<L, R, D, false>(lattice, &cell, &f, &s);
-}
-
-/// The part of [`sample_gradient_lanes`] after the split: hashes, dot products and
-/// interpolation for lanes with cells `cell`, fractions `f` and faded fractions `s`.
-///
-/// With `ROW`, the caller promises that along axes 1.. every lane holds the same numbers (a
-/// row of a grid); the one-cell path then reads lane 0 there, so the compiler sees those
-/// numbers, and their products with the gradients, as constants of the lane loop and computes
-/// them once. The same numbers enter the same operations: the results are unchanged.
-#[inline]
-pub(crate) fn gradient_lanes<L: GradientLattice<D>, R: Real, const D: usize, const ROW: bool>(
-    lattice: &L,
-    cell: &[[i32; LANES]; D],
-    f: &[[R; LANES]; D],
-    s: &[[R; LANES]; D],
-) -> [R; LANES] {
-    if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
-        // Every lane in one cell (a grid finer than LANES samples per cell, along a row): hash
-        // the corners and look up their gradients once; then each lane runs the point
-        // kernel's dot products and interpolation in registers, one straight-line body the
-        // compiler vectorises across lanes.
-        let h = lattice.corner_hashes(cell.map(|ca| ca[0]));
-        let mut g = [[R::ZERO; D]; MAX_CORNERS];
-        for (m, gm) in g.iter_mut().enumerate().take(1 << D) {
-            *gm = lattice.gradient(h[m]);
-        }
-        let f1 = minus_one_lanes(f);
-        let mut out = [R::ZERO; LANES];
-        for (l, o) in out.iter_mut().enumerate() {
-            let mut v = [R::ZERO; MAX_CORNERS];
-            for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
-                *vm = lattice.dot_with(&g[m], &lane_offset::<R, D, ROW>(f, &f1, m, l));
-            }
-            let t: [R; D] = core::array::from_fn(|a| s[a][lane_at::<ROW>(a, l)]);
-            *o = interpolate(v, &t).canonical();
-        }
-        out
+    *out = if cell.iter().all(|ca| ca.iter().all(|&c| c == ca[0])) {
+        one_cell_lanes(
+            lattice,
+            cell.map(|ca| ca[0]),
+            |a, l| f[a][l],
+            |a, l| s[a][l],
+        )
     } else {
-        gradient_lanes_per_lane::<L, R, D, ROW>(lattice, cell, f, s)
+        lanes_in_several_cells(lattice, &cell, &f, &s)
+    };
+}
+
+/// The lanes of [`sample_gradient_lanes`] when all of them lie in one cell `cell` (a grid finer
+/// than [`LANES`] samples per cell, along a row): the corners are hashed and their gradients
+/// looked up once; then each lane runs the point kernel's dot products and interpolation, one
+/// straight-line body that the compiler vectorises across lanes.
+///
+/// `f(a, l)` and `s(a, l)` are lane `l`'s fraction and faded fraction along axis `a`. Where they
+/// do not depend on `l` (the axes of a grid row other than axis 0), the compiler sees constants
+/// of the lane loop and computes their products with the gradients once.
+#[inline]
+fn one_cell_lanes<L: GradientLattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    cell: [i32; D],
+    f: impl Fn(usize, usize) -> R,
+    s: impl Fn(usize, usize) -> R,
+) -> [R; LANES] {
+    let h = lattice.corner_hashes(cell);
+    let mut g = [[R::ZERO; D]; MAX_CORNERS];
+    for (m, gm) in g.iter_mut().enumerate().take(1 << D) {
+        *gm = lattice.gradient(h[m]);
     }
-}
-
-/// `f − 1` for every lane's fractions.
-#[inline]
-fn minus_one_lanes<R: Real, const D: usize>(f: &[[R; LANES]; D]) -> [[R; LANES]; D] {
-    f.map(|fa| fa.map(|x| x - R::ONE))
-}
-
-/// The lane to read along axis `a` for lane `l`: lane 0 off axis 0 when `ROW` promises that
-/// every lane holds the same numbers there (see [`gradient_lanes`]).
-#[inline]
-fn lane_at<const ROW: bool>(a: usize, l: usize) -> usize {
-    if ROW && a > 0 { 0 } else { l }
-}
-
-/// [`corner_offset`] for lane `l`: the offset from corner `m` to the lane's point, given the
-/// lanes' fractions `f` and `f1 = f − 1`.
-#[inline]
-fn lane_offset<R: Real, const D: usize, const ROW: bool>(
-    f: &[[R; LANES]; D],
-    f1: &[[R; LANES]; D],
-    m: usize,
-    l: usize,
-) -> [R; D] {
-    core::array::from_fn(|a| {
-        let l = lane_at::<ROW>(a, l);
-        if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] }
+    core::array::from_fn(|l| {
+        let fl: [R; D] = core::array::from_fn(|a| f(a, l));
+        let f1 = minus_one(&fl);
+        let mut v = [R::ZERO; MAX_CORNERS];
+        for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
+            *vm = lattice.dot_with(&g[m], &corner_offset(&fl, &f1, m));
+        }
+        let t: [R; D] = core::array::from_fn(|a| s(a, l));
+        interpolate(v, &t).canonical()
     })
 }
 
-/// The path of [`gradient_lanes`] for lanes in several cells: one hash chain and one gradient
-/// per lane. Kept out of line so that its code does not change how the compiler lays out the
-/// one-cell path (inlined, it cost the 2D grid kernel 4 instructions per sample); one call per
-/// chunk of 16 lanes costs next to nothing.
+/// The lanes of [`sample_gradient_lanes`] when they lie in several cells: one hash chain and
+/// one gradient per lane. Kept out of line so that its code does not change how the compiler
+/// lays out the one-cell path (inlined, it cost the 2D grid kernel 4 instructions per sample);
+/// one call per chunk of 16 lanes costs next to nothing.
 #[inline(never)]
-fn gradient_lanes_per_lane<L: GradientLattice<D>, R: Real, const D: usize, const ROW: bool>(
+fn lanes_in_several_cells<L: GradientLattice<D>, R: Real, const D: usize>(
     lattice: &L,
     cell: &[[i32; LANES]; D],
     f: &[[R; LANES]; D],
     s: &[[R; LANES]; D],
 ) -> [R; LANES] {
-    let f1 = minus_one_lanes(f);
+    let f1 = f.map(|fa| fa.map(|x| x - R::ONE));
     let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
     let h = lattice.corner_hashes_lanes(cell);
     for (m, vm) in v.iter_mut().enumerate().take(1 << D) {
         for (l, vml) in vm.iter_mut().enumerate() {
-            *vml = lattice.dot(h[m][l], &lane_offset::<R, D, ROW>(f, &f1, m, l));
+            *vml = lattice.dot(h[m][l], &lane_offset(f, &f1, m, l));
         }
     }
     interpolate_lanes(&mut v, s);
     v[0].map(R::canonical)
 }
 
-/// [`Noise::fill_grid`](crate::Noise::fill_grid) for a gradient lattice: column chunks of
-/// [`LANES`] points outermost, so each chunk's split and fade along axis 0 serve every row,
-/// and the other axes, constant along a row, are split and faded once per row. The values
-/// are those of [`sample_gradient_lanes`] (the same operations on the same numbers).
+/// [`corner_offset`] for lane `l`: the offset from corner `m` to the lane's point, given the
+/// lanes' fractions `f` and `f1 = f − 1`.
+#[inline]
+fn lane_offset<R: Real, const D: usize>(
+    f: &[[R; LANES]; D],
+    f1: &[[R; LANES]; D],
+    m: usize,
+    l: usize,
+) -> [R; D] {
+    core::array::from_fn(|a| if m >> a & 1 == 0 { f[a][l] } else { f1[a][l] })
+}
+
+/// Chunks of [`LANES`] columns that [`fill_grid_gradient`] takes through the rows together, so
+/// that each row's split and fade along the axes other than 0 serve all of them.
+const CHUNKS_PER_BLOCK: usize = 4;
+
+/// Axis 0 of one chunk of a grid: every lane's cell, fraction and faded fraction, and whether
+/// the lanes share one cell.
+#[derive(Clone, Copy)]
+struct ChunkAxis0<R> {
+    cell: [i32; LANES],
+    f: [R; LANES],
+    s: [R; LANES],
+    one_cell: bool,
+}
+
+/// [`Noise::fill_grid`](crate::Noise::fill_grid) for a gradient lattice: blocks of
+/// [`CHUNKS_PER_BLOCK`] column chunks of [`LANES`] points outermost, so each chunk's split and
+/// fade along axis 0 serve every row; the other axes, constant along a row, are split and faded
+/// once per row and block. The values are those of [`sample_gradient_lanes`] (the same
+/// operations on the same numbers).
 pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>(
     lattice: &L,
     grid: &Grid<R, D>,
@@ -229,21 +229,52 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
     }
     let width = grid.size[0];
     let rows = out.len() / width;
-    for start in (0..width).step_by(LANES) {
-        let x: [R; LANES] = core::array::from_fn(|l| grid.coordinate(0, start + l));
-        let (mut cell, mut f) = ([[0i32; LANES]; D], [[R::ZERO; LANES]; D]);
-        R::split_lanes(&x, &mut cell[0], &mut f[0]);
-        let mut s = [[R::ZERO; LANES]; D];
-        s[0] = f[0].map(L::Fade::fade);
-        let n = LANES.min(width - start);
+    for block in (0..width).step_by(LANES * CHUNKS_PER_BLOCK) {
+        let chunks = (width - block).div_ceil(LANES).min(CHUNKS_PER_BLOCK);
+        let mut x = [ChunkAxis0 {
+            cell: [0; LANES],
+            f: [R::ZERO; LANES],
+            s: [R::ZERO; LANES],
+            one_cell: false,
+        }; CHUNKS_PER_BLOCK];
+        for (k, xk) in x.iter_mut().enumerate().take(chunks) {
+            let coordinates = core::array::from_fn(|l| grid.coordinate(0, block + k * LANES + l));
+            R::split_lanes(&coordinates, &mut xk.cell, &mut xk.f);
+            xk.s = xk.f.map(L::Fade::fade);
+            xk.one_cell = xk.cell.iter().all(|&c| c == xk.cell[0]);
+        }
         for row in 0..rows {
+            // Axes 1..: (cell, fraction, faded fraction) of the row; axis 0 unused.
+            let mut along = [(0i32, R::ZERO, R::ZERO); D];
             let first = grid.row_start(row);
-            for a in 1..D {
+            for (a, along_a) in along.iter_mut().enumerate().skip(1) {
                 let (c, fa) = first[a].split();
-                (cell[a], f[a], s[a]) = ([c; LANES], [fa; LANES], [L::Fade::fade(fa); LANES]);
+                *along_a = (c, fa, L::Fade::fade(fa));
             }
-            let v = gradient_lanes::<L, R, D, true>(lattice, &cell, &f, &s);
-            batch::store_lanes(&mut out[row * width + start..][..n], &v);
+            for (k, xk) in x.iter().enumerate().take(chunks) {
+                let start = block + k * LANES;
+                let v = if xk.one_cell {
+                    let cell =
+                        core::array::from_fn(|a| if a == 0 { xk.cell[0] } else { along[a].0 });
+                    let f = |a: usize, l| if a == 0 { xk.f[l] } else { along[a].1 };
+                    let s = |a: usize, l| if a == 0 { xk.s[l] } else { along[a].2 };
+                    one_cell_lanes(lattice, cell, f, s)
+                } else {
+                    let cell =
+                        core::array::from_fn(
+                            |a| if a == 0 { xk.cell } else { [along[a].0; LANES] },
+                        );
+                    let f =
+                        core::array::from_fn(|a| if a == 0 { xk.f } else { [along[a].1; LANES] });
+                    let s =
+                        core::array::from_fn(|a| if a == 0 { xk.s } else { [along[a].2; LANES] });
+                    lanes_in_several_cells(lattice, &cell, &f, &s)
+                };
+                batch::store_lanes(
+                    &mut out[row * width + start..][..LANES.min(width - start)],
+                    &v,
+                );
+            }
         }
     }
     Ok(())
