@@ -68,6 +68,15 @@ pub(crate) trait GradientLattice<const D: usize> {
         sample_gradient(self, p)
     }
 
+    /// Whether [`sample_point`](Self::sample_point), lane by lane, is faster than the lane
+    /// kernel for lanes in several cells (true where `sample_point` has a vector kernel); the
+    /// lanes of [`sample_gradient_lanes`] (fractal octaves finer than a chunk, scattered points)
+    /// then take it. Either gives the same values.
+    #[inline]
+    fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+        false
+    }
+
     /// `dot(h, d)` given the gradient `g = gradient(h)`: `Σ_a d_a·g_a` in axis order. Equal to
     /// `dot` except, possibly, for the sign of a zero (every gradient here has components whose
     /// products are exact, and the missing terms of `dot` are the zero components), which
@@ -127,6 +136,8 @@ pub(crate) fn sample_gradient_lanes<L: GradientLattice<D>, R: Real, const D: usi
             |a, l| f[a][l],
             |a, l| s[a][l],
         )
+    } else if L::point_kernel_for_scattered_lanes::<R>() {
+        core::array::from_fn(|l| lattice.sample_point(batch::lane(p, l)))
     } else {
         lanes_in_several_cells(lattice, &cell, &f, &s)
     };

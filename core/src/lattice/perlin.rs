@@ -81,13 +81,20 @@ impl core::fmt::Debug for Perlin {
     }
 }
 
+/// Whether 2D and 3D sampling in `R` take the SSE2 kernel: `f32` on x86-64.
+#[inline]
+fn has_vector_kernel<R: Real>() -> bool {
+    cfg!(all(target_arch = "x86_64", target_feature = "sse2"))
+        && core::any::TypeId::of::<R>() == core::any::TypeId::of::<f32>()
+}
+
 /// `f32`, seen as `R`, when `R` is `f32`: the point kernels with a vector version for `f32`
 /// only take it this way (the comparison of type ids is a constant; the conversions are the
 /// identity).
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 #[inline]
 fn as_f32<R: Real, const D: usize>(p: [R; D]) -> Option<[f32; D]> {
-    (core::any::TypeId::of::<R>() == core::any::TypeId::of::<f32>()).then(|| p.map(R::to_f32))
+    has_vector_kernel::<R>().then(|| p.map(R::to_f32))
 }
 
 /// The shared kernel in `f32`, for the coordinates the SSE2 kernel leaves to it (beyond ±2²²,
@@ -201,6 +208,10 @@ impl GradientLattice<2> for Perlin {
         sample_gradient(self, p)
     }
     #[inline]
+    fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+        has_vector_kernel::<R>()
+    }
+    #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 2]) -> R {
         self.dot_with(&self.gradient(h), d)
     }
@@ -228,6 +239,10 @@ impl GradientLattice<3> for Perlin {
             return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y, z])));
         }
         sample_gradient(self, p)
+    }
+    #[inline]
+    fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+        has_vector_kernel::<R>()
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {
