@@ -11,13 +11,13 @@
 //! [`sample_gradient`]: super::sample_gradient
 
 use safe_arch::{
-    add_i32_m128i, add_m128, add_m128_s, bitandnot_m128, cast_to_m128_from_m128i,
+    add_i32_m128i, add_m128, add_m128_s, bitor_m128, cast_to_m128_from_m128i,
     cast_to_m128i_from_m128, cmp_eq_mask_i32_m128i, cmp_ge_mask_m128, cmp_gt_mask_m128,
     convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
     get_i32_from_m128i_s, load_unaligned_m128, m128, move_high_low_m128, move_low_high_m128,
     move_mask_m128, mul_m128, mul_m128_s, set_splat_i32_m128i, set_splat_m128,
-    shuffle_abi_f32_all_m128, sub_i32_m128i, sub_m128, sub_m128_s, truncate_m128_to_m128i,
-    unpack_high_m128, unpack_low_m128, zeroed_m128,
+    shuffle_abi_f32_all_m128, sub_m128, sub_m128_s, truncate_m128_to_m128i, unpack_high_m128,
+    unpack_low_m128, zeroed_m128,
 };
 
 use super::perlin::GRAD3;
@@ -135,9 +135,11 @@ fn splat<const MASK: i32>(v: m128) -> m128 {
 
 /// [`Real::split`](crate::Real::split) of the lanes `axes` selects (a bit per lane), and the
 /// quintic fade of the fractions: the cells reduced mod 256, the fractions and the faded
-/// fractions; `None` if a coordinate is outside `(−2^31, 2^31)` or not finite (there the
-/// truncating conversion gives its "invalid" value −2^31, in which case the shared kernel
-/// decides; −2^31 itself goes there too).
+/// fractions. `None` leaves the point to the shared kernel: a coordinate outside
+/// `(−2^31, 2^31)` or not finite (where the truncating conversion gives its "invalid" value
+/// −2^31; −2^31 itself goes there too), or a negative one so small that its fraction rounds
+/// to 1 (the next cell, fraction 0, in [`Real::split`](crate::Real::split)). Leaving that rare
+/// case out keeps the cells, and so the hash chain that waits for them, one comparison earlier.
 ///
 /// The fraction of `−0.0` stays `−0.0` here (the shared kernel adds `+0.0`); that changes at
 /// most the sign of a zero in the sum, which [`finish`] canonicalises like the shared kernel.
@@ -145,18 +147,14 @@ fn splat<const MASK: i32>(v: m128) -> m128 {
 fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
     // floor: truncate, then one down where truncation rounded up (negative non-integers).
     let t = truncate_m128_to_m128i(v);
-    let invalid = cmp_eq_mask_i32_m128i(t, set_splat_i32_m128i(i32::MIN));
-    if move_mask_m128(cast_to_m128_from_m128i(invalid)) & axes != 0 {
-        return None;
-    }
     let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(t), v);
     let cell = add_i32_m128i(t, cast_to_m128i_from_m128(above));
     let f = sub_m128(v, convert_to_m128_from_i32_m128i(cell));
-    // A tiny negative coordinate's fraction rounds to 1: the next cell, fraction 0.
-    let one = set_splat_m128(1.0);
-    let up = cmp_ge_mask_m128(f, one);
-    let cell = sub_i32_m128i(cell, cast_to_m128i_from_m128(up));
-    let f = bitandnot_m128(up, f);
+    let invalid = cmp_eq_mask_i32_m128i(t, set_splat_i32_m128i(i32::MIN));
+    let rounds_to_one = cmp_ge_mask_m128(f, set_splat_m128(1.0));
+    if move_mask_m128(bitor_m128(cast_to_m128_from_m128i(invalid), rounds_to_one)) & axes != 0 {
+        return None;
+    }
     // Perlin's order: t·t·t·(t·(t·6 − 15) + 10).
     let t3 = mul_m128(mul_m128(f, f), f);
     let inner = sub_m128(mul_m128(f, set_splat_m128(6.0)), set_splat_m128(15.0));
