@@ -44,24 +44,29 @@ impl Kernel<'_> {
     pub(super) fn sample2(&self, x: f32, y: f32) -> Option<f32> {
         let (cell, f, s) = split_fade(m128::from_array([x, y, 0.0, 0.0]), 0b11)?;
         let [cx, cy, _] = cell;
-        // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j].
+        // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
+        // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
+        // takes are the vector's halves.
         let a = self.p(cx) + cy;
         let b = self.p(cx + 1) + cy;
         let (g0, g1, g2, g3) = (
             self.gradient(a),
-            self.gradient(b),
             self.gradient(a + 1),
+            self.gradient(b),
             self.gradient(b + 1),
         );
-        let (dx, dy, _, _) = offsets(f);
-        // Corner m's dot product in lane m: g_x·d_x + g_y·d_y.
+        let f1 = sub_m128(f, set_splat_m128(1.0));
+        let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
+        let dx = shuffle_abi_f32_all_m128::<0b01_01_00_00>(u, u);
+        let dy = shuffle_abi_f32_all_m128::<0b11_10_11_10>(u, u);
         let l01 = unpack_low_m128(g0, g1); // g0x g1x g0y g1y
         let l23 = unpack_low_m128(g2, g3);
         let gx = move_low_high_m128(l01, l23);
         let gy = move_high_low_m128(l23, l01);
+        // g_x·d_x + g_y·d_y, the shared kernel's order.
         let v = add_m128(mul_m128(dx, gx), mul_m128(dy, gy));
-        // Along x: (v0, v1) and (v2, v3) in lanes 0 and 1.
-        let r = lerp_pairs(v, v, splat::<0b00_00_00_00>(s));
+        // Along x, then y.
+        let r = lerp_halves(v, splat::<0b00_00_00_00>(s));
         Some(finish(r, splat::<0b01_01_01_01>(s)))
     }
 
@@ -75,34 +80,38 @@ impl Kernel<'_> {
         let b = self.p(cx + 1) + cy;
         let (aa, ab) = (self.p(a) + cz, self.p(a + 1) + cz);
         let (ba, bb) = (self.p(b) + cz, self.p(b + 1) + cz);
-        let (dx, dy, dz0, dz1) = offsets(f);
-        // Corners 0–3 (z = 0) and 4–7 (z = 1), corner m in lane m & 3.
-        let lo = dots3(
+        let f1 = sub_m128(f, set_splat_m128(1.0));
+        let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
+        let w = unpack_high_m128(f, f1); // fz, fz − 1, 0, −1
+        let dy = shuffle_abi_f32_all_m128::<0b11_11_10_10>(u, u);
+        let dz = move_low_high_m128(w, w);
+        // The corners with i = 0 in one vector, i = 1 in the other, (j, k) = (0, 0), (0, 1),
+        // (1, 0), (1, 1) in lanes 0–3: the lerp along x pairs lanes, along y the halves.
+        let x0 = dots3(
             [
                 self.gradient(aa),
-                self.gradient(ba),
-                self.gradient(ab),
-                self.gradient(bb),
-            ],
-            dx,
-            dy,
-            dz0,
-        );
-        let hi = dots3(
-            [
                 self.gradient(aa + 1),
-                self.gradient(ba + 1),
+                self.gradient(ab),
                 self.gradient(ab + 1),
+            ],
+            splat::<0b00_00_00_00>(f),
+            dy,
+            dz,
+        );
+        let x1 = dots3(
+            [
+                self.gradient(ba),
+                self.gradient(ba + 1),
+                self.gradient(bb),
                 self.gradient(bb + 1),
             ],
-            dx,
+            splat::<0b00_00_00_00>(f1),
             dy,
-            dz1,
+            dz,
         );
-        // Along x: the four pairs (v0, v1), (v2, v3), (v4, v5), (v6, v7).
-        let r = lerp_pairs(lo, hi, splat::<0b00_00_00_00>(s));
-        // Along y: (r0, r1) and (r2, r3) in lanes 0 and 1.
-        let q = lerp_pairs(r, r, splat::<0b01_01_01_01>(s));
+        let sx = splat::<0b00_00_00_00>(s);
+        let r = add_m128(x0, mul_m128(sx, sub_m128(x1, x0)));
+        let q = lerp_halves(r, splat::<0b01_01_01_01>(s));
         Some(finish(q, splat::<0b10_10_10_10>(s)))
     }
 }
@@ -167,20 +176,6 @@ fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
     Some((cells, f, s))
 }
 
-/// The offsets from the corners to the point: `(f_x, f_x − 1, f_x, f_x − 1)`,
-/// `(f_y, f_y, f_y − 1, f_y − 1)`, and `f_z`, `f_z − 1` in every lane.
-#[inline]
-fn offsets(f: m128) -> (m128, m128, m128, m128) {
-    let f1 = sub_m128(f, set_splat_m128(1.0));
-    let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
-    (
-        shuffle_abi_f32_all_m128::<0b01_00_01_00>(u, u),
-        shuffle_abi_f32_all_m128::<0b11_11_10_10>(u, u),
-        splat::<0b10_10_10_10>(f),
-        splat::<0b10_10_10_10>(f1),
-    )
-}
-
 /// The dot products of four gradient rows with the offsets, in the shared kernel's order
 /// `(d_x·g_x + d_y·g_y) + d_z·g_z`, one corner per lane.
 #[inline]
@@ -199,13 +194,12 @@ fn dots3(rows: [m128; 4], dx: m128, dy: m128, dz: m128) -> m128 {
     )
 }
 
-/// Perlin's `lerp(t, a, b) = a + t·(b − a)` of the pairs `(lo0, lo1)`, `(lo2, lo3)`,
-/// `(hi0, hi1)`, `(hi2, hi3)`, in lanes 0–3.
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)` of the pairs `(v0, v2)` and `(v1, v3)`, in lanes
+/// 0 and 1.
 #[inline]
-fn lerp_pairs(lo: m128, hi: m128, t: m128) -> m128 {
-    let a = shuffle_abi_f32_all_m128::<0b10_00_10_00>(lo, hi);
-    let b = shuffle_abi_f32_all_m128::<0b11_01_11_01>(lo, hi);
-    add_m128(a, mul_m128(t, sub_m128(b, a)))
+fn lerp_halves(v: m128, t: m128) -> m128 {
+    let b = move_high_low_m128(v, v);
+    add_m128(v, mul_m128(t, sub_m128(b, v)))
 }
 
 /// The last interpolation step, `lerp(t, v0, v1)`, then `+ 0.0` as
