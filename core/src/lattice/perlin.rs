@@ -4,6 +4,9 @@
 //! `p[p[p[x] + y] + z]`. In 3D the gradient is chosen from the 12 edges of the cube (with 4
 //! repeated to make 16) exactly as in Perlin's reference `grad`, so that with seed 0 the f64 noise
 //! reproduces his reference values bit for bit.
+//!
+//! In `f32` on x86-64, 2D and 3D sampling runs an SSE2 version of the same kernel
+//! (`perlin_sse2.rs`) with the same values; see [`Perlin`]'s performance notes.
 
 use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first, sum_of_products};
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
@@ -20,6 +23,9 @@ use crate::hash::Permutation;
 ///   2D uses the same function with `z = 0` (edges projected onto the plane: diagonals and axes).
 ///   1D uses the 8 slopes `±¼, ±½, ±¾, ±1` from `h & 7`. 4D uses the 32 edges of the
 ///   tesseract (one zero component, three ±1) from `h & 31`.
+/// * **Speed**: in `f32` on x86-64, 2D and 3D `sample` run an SSE2 kernel (same values, bit
+///   for bit): about 80 and 130 instructions per sample. For many samples, the batch API
+///   ([`Noise::fill_grid`](crate::Noise::fill_grid)) is 5–8× faster still.
 /// * **Range**: `|n| ≤ D/2` (+2⁻¹⁰ for rounding; module docs of [`lattice`](super)); 0 at
 ///   every lattice point. Measured maxima over 2·10⁶ random points (`tests/tests/statistics.rs`):
 ///   1D 0.500, 2D 0.999, 3D 0.998, 4D 1.118.

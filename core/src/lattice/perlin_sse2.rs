@@ -1,7 +1,7 @@
-//! Perlin's improved noise at one point in 2D and 3D with SSE2 (x86-64), in `f32`: the axes
-//! split and faded together, and the 4 (2D) or 8 (3D) corner dot products and the first
-//! interpolation step in 4-lane vectors. The point kernel of [`sample_gradient`] does the same
-//! steps one number at a time.
+//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D and 3D with SSE2
+//! (x86-64), in `f32`: the axes split and faded together, and the 4 (2D) or 8 (3D) corner dot
+//! products and the lerps in 4-lane vectors. The point kernel of [`sample_gradient`] does the
+//! same steps one number at a time.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
@@ -39,6 +39,13 @@ impl Kernel<'_> {
         load_unaligned_m128(&ROWS.0[self.p(i)])
     }
 
+    /// The gradients of the hash inputs `a`, `a + 1`, `b`, `b + 1`: the last step of Perlin's
+    /// chain for four corners, in that lane order.
+    #[inline]
+    fn gradients(&self, a: usize, b: usize) -> [m128; 4] {
+        [a, a + 1, b, b + 1].map(|i| self.gradient(i))
+    }
+
     /// The noise at `(x, y)`, or `None` outside the vector path's range.
     #[inline]
     pub(super) fn sample2(&self, x: f32, y: f32) -> Option<f32> {
@@ -49,12 +56,7 @@ impl Kernel<'_> {
         // takes are the vector's halves.
         let a = self.p(cx) + cy;
         let b = self.p(cx + 1) + cy;
-        let (g0, g1, g2, g3) = (
-            self.gradient(a),
-            self.gradient(a + 1),
-            self.gradient(b),
-            self.gradient(b + 1),
-        );
+        let [g0, g1, g2, g3] = self.gradients(a, b);
         let f1 = sub_m128(f, set_splat_m128(1.0));
         let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
         let dx = shuffle_abi_f32_all_m128::<0b01_01_00_00>(u, u);
@@ -87,28 +89,8 @@ impl Kernel<'_> {
         let dz = move_low_high_m128(w, w);
         // The corners with i = 0 in one vector, i = 1 in the other, (j, k) = (0, 0), (0, 1),
         // (1, 0), (1, 1) in lanes 0–3: the lerp along x pairs lanes, along y the halves.
-        let x0 = dots3(
-            [
-                self.gradient(aa),
-                self.gradient(aa + 1),
-                self.gradient(ab),
-                self.gradient(ab + 1),
-            ],
-            splat::<0b00_00_00_00>(f),
-            dy,
-            dz,
-        );
-        let x1 = dots3(
-            [
-                self.gradient(ba),
-                self.gradient(ba + 1),
-                self.gradient(bb),
-                self.gradient(bb + 1),
-            ],
-            splat::<0b00_00_00_00>(f1),
-            dy,
-            dz,
-        );
+        let x0 = dots3(self.gradients(aa, ab), splat::<0b00_00_00_00>(f), dy, dz);
+        let x1 = dots3(self.gradients(ba, bb), splat::<0b00_00_00_00>(f1), dy, dz);
         let sx = splat::<0b00_00_00_00>(s);
         let r = add_m128(x0, mul_m128(sx, sub_m128(x1, x0)));
         let q = lerp_halves(r, splat::<0b01_01_01_01>(s));
