@@ -103,8 +103,9 @@ fn as_f32<R: Real, const D: usize>(p: [R; D]) -> Option<[f32; D]> {
     has_vector_kernel::<R>().then(|| p.map(R::to_f32))
 }
 
-/// The shared kernel in `f32`, for the coordinates the SSE2 kernel leaves to it (beyond ±2²²,
-/// or not finite): out of line, so that the vector kernel stays small enough to inline.
+/// The shared kernel in `f32`, for the coordinates the SSE2 kernel leaves to it (beyond ±2³¹,
+/// not finite, or a tiny negative whose fraction rounds to 1): out of line, so that the vector
+/// kernel stays small enough to inline.
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 #[cold]
 #[inline(never)]

@@ -6,7 +6,7 @@
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
 //! bit; a test compares them over random and edge-case points. The intrinsics are the safe
-//! wrappers of `safe_arch` (this crate forbids `unsafe`).
+//! wrappers of `safe_arch`, so the crate keeps `#![forbid(unsafe_code)]`.
 //!
 //! [`sample_gradient`]: super::sample_gradient
 
