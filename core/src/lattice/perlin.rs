@@ -41,12 +41,24 @@ use crate::hash::Permutation;
 /// let fixed: I16F16 = p.sample([I16F16::from_num(3.14), I16F16::from_num(42), I16F16::from_num(7)]);
 /// assert!((fixed.to_num::<f64>() - 0.136919958784).abs() < 1e-3);
 /// ```
-#[derive(Clone, PartialEq, Eq)]
+#[derive(Clone)]
 pub struct Perlin {
     /// The seed's [`Permutation`] repeated twice, as in Perlin's reference code (`p[i + 256] =
     /// p[i]`): the hash chain's indices `p[x] + y + 1` stay below 512 without a `& 255`.
     p: [u8; 512],
+    /// The SSE2 kernel's gradients of neighbouring hash values (16 KiB), derived from `p`.
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    pairs: perlin_sse2::GradientPairs,
 }
+
+/// Two noises are equal when their permutations are (the rest is derived from it).
+impl PartialEq for Perlin {
+    fn eq(&self, other: &Self) -> bool {
+        self.p == other.p
+    }
+}
+
+impl Eq for Perlin {}
 
 impl Perlin {
     /// Improved noise for `seed`; seed 0 is Perlin's reference noise. `const`, so
@@ -61,13 +73,21 @@ impl Perlin {
             p[i] = table[i & 255];
             i += 1;
         }
-        Self { p }
+        Self {
+            #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+            pairs: perlin_sse2::GradientPairs::new(&p),
+            p,
+        }
     }
 
-    /// The doubled permutation (for the SSE2 kernel's test).
-    #[cfg(all(test, target_arch = "x86_64", target_feature = "sse2"))]
-    pub(super) fn doubled(&self) -> &[u8; 512] {
-        &self.p
+    /// The SSE2 kernel over this seed's tables.
+    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    #[inline]
+    pub(super) fn kernel(&self) -> perlin_sse2::Kernel<'_> {
+        perlin_sse2::Kernel {
+            p: &self.p,
+            pairs: &self.pairs,
+        }
     }
 
     #[inline]
@@ -209,7 +229,7 @@ impl GradientLattice<2> for Perlin {
     fn sample_point<R: Real>(&self, p: [R; 2]) -> R {
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         if let Some([x, y]) = as_f32(p) {
-            let v = perlin_sse2::Kernel(&self.p).sample2(x, y);
+            let v = self.kernel().sample2(x, y);
             return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y])));
         }
         sample_gradient(self, p)
@@ -242,7 +262,7 @@ impl GradientLattice<3> for Perlin {
     fn sample_point<R: Real>(&self, p: [R; 3]) -> R {
         #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
         if let Some([x, y, z]) = as_f32(p) {
-            let v = perlin_sse2::Kernel(&self.p).sample3(x, y, z);
+            let v = self.kernel().sample3(x, y, z);
             return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y, z])));
         }
         sample_gradient(self, p)

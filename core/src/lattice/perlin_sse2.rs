@@ -22,28 +22,60 @@ use safe_arch::{
 
 use super::perlin::GRAD3;
 
-/// Perlin's doubled permutation (see [`Perlin`](super::Perlin)): `p[p[x] + y]` and `p[… + 1]`
-/// need no `& 255`, every index the hash chain forms being at most 255 + 256.
-pub(super) struct Kernel<'a>(pub(super) &'a [u8; 512]);
+/// The gradients of every pair of neighbouring hash values, per seed: entry `b` (`b < 512`, an
+/// index of the doubled permutation `p`) holds the gradients of `p[b]` and `p[b + 1]`, the
+/// last step of Perlin's chain for two corners that differ along the innermost hashed axis,
+/// as `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]`. One lookup replaces two permutation
+/// lookups, two gradient lookups and their transposition, and takes a level off the chain of
+/// dependent loads: `p[p[x] + y]` and its neighbour in 2D, `p[p[p[x] + y] + z]` and its
+/// neighbour in 3D. 16 KiB, built by [`Perlin::new`](super::Perlin::new) (at compile time
+/// for a `const` or `static`).
+#[derive(Clone)]
+#[repr(align(32))]
+pub(super) struct GradientPairs([[[f32; 4]; 2]; 512]);
+
+impl GradientPairs {
+    /// The table of the doubled permutation `p`.
+    pub(super) const fn new(p: &[u8; 512]) -> Self {
+        let mut pairs = [[[0.0f32; 4]; 2]; 512];
+        let mut b = 0;
+        while b < 512 {
+            // Entry 511 is never read (b ≤ 255 + 255); its p[b + 1] wraps as p does.
+            let g0 = GRAD3[(p[b] & 15) as usize];
+            let g1 = GRAD3[(p[(b + 1) & 511] & 15) as usize];
+            pairs[b] = [
+                [g0[0] as f32, g0[1] as f32, g1[0] as f32, g1[1] as f32],
+                [g0[2] as f32, g1[2] as f32, 0.0, 0.0],
+            ];
+            b += 1;
+        }
+        Self(pairs)
+    }
+}
+
+/// The SSE2 kernel over a seed's tables: Perlin's doubled permutation (see
+/// [`Perlin`](super::Perlin)), whose hash chain `p[p[x] + y]` needs no `& 255` (every index it
+/// forms is at most 255 + 256), and its [`GradientPairs`].
+pub(super) struct Kernel<'a> {
+    pub(super) p: &'a [u8; 512],
+    pub(super) pairs: &'a GradientPairs,
+}
 
 impl Kernel<'_> {
     /// Perlin's `p[i]` for `i < 512`.
     #[inline]
     fn p(&self, i: usize) -> usize {
-        usize::from(self.0[i])
+        usize::from(self.p[i])
     }
 
-    /// The gradient of corner hash input `i`, as a vector `(g_x, g_y, g_z, 0)`.
+    /// The x and y components of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1`, in
+    /// that lane order.
     #[inline]
-    fn gradient(&self, i: usize) -> m128 {
-        load_unaligned_m128(&ROWS.0[self.p(i)])
-    }
-
-    /// The gradients of the hash inputs `a`, `a + 1`, `b`, `b + 1`: the last step of Perlin's
-    /// chain for four corners, in that lane order.
-    #[inline]
-    fn gradients(&self, a: usize, b: usize) -> [m128; 4] {
-        [a, a + 1, b, b + 1].map(|i| self.gradient(i))
+    fn gradients_xy(&self, a: usize, b: usize) -> (m128, m128) {
+        let [ra, rb] = [a, b].map(|i| load_unaligned_m128(&self.pairs.0[i][0]));
+        let gx = shuffle_abi_f32_all_m128::<0b10_00_10_00>(ra, rb);
+        let gy = shuffle_abi_f32_all_m128::<0b11_01_11_01>(ra, rb);
+        (gx, gy)
     }
 
     /// The noise at `(x, y)`, or `None` outside the vector path's range.
@@ -54,17 +86,11 @@ impl Kernel<'_> {
         // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
         // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
         // takes are the vector's halves.
-        let a = self.p(cx) + cy;
-        let b = self.p(cx + 1) + cy;
-        let [g0, g1, g2, g3] = self.gradients(a, b);
+        let (gx, gy) = self.gradients_xy(self.p(cx) + cy, self.p(cx + 1) + cy);
         let f1 = sub_m128(f, set_splat_m128(1.0));
         let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
         let dx = shuffle_abi_f32_all_m128::<0b01_01_00_00>(u, u);
         let dy = shuffle_abi_f32_all_m128::<0b11_10_11_10>(u, u);
-        let l01 = unpack_low_m128(g0, g1); // g0x g1x g0y g1y
-        let l23 = unpack_low_m128(g2, g3);
-        let gx = move_low_high_m128(l01, l23);
-        let gy = move_high_low_m128(l23, l01);
         // g_x·d_x + g_y·d_y, the shared kernel's order.
         let v = add_m128(mul_m128(dx, gx), mul_m128(dy, gy));
         // Along x, then y.
@@ -89,34 +115,28 @@ impl Kernel<'_> {
         let dz = move_low_high_m128(w, w);
         // The corners with i = 0 in one vector, i = 1 in the other, (j, k) = (0, 0), (0, 1),
         // (1, 0), (1, 1) in lanes 0–3: the lerp along x pairs lanes, along y the halves.
-        let x0 = dots3(self.gradients(aa, ab), splat::<0b00_00_00_00>(f), dy, dz);
-        let x1 = dots3(self.gradients(ba, bb), splat::<0b00_00_00_00>(f1), dy, dz);
+        let x0 = self.dots3(aa, ab, splat::<0b00_00_00_00>(f), dy, dz);
+        let x1 = self.dots3(ba, bb, splat::<0b00_00_00_00>(f1), dy, dz);
         let sx = splat::<0b00_00_00_00>(s);
         let r = add_m128(x0, mul_m128(sx, sub_m128(x1, x0)));
         let q = lerp_halves(r, splat::<0b01_01_01_01>(s));
         Some(finish(q, splat::<0b10_10_10_10>(s)))
     }
-}
 
-/// The gradient of every permutation value `h` (row `GRAD3[h & 15]`) as `f32` padded to four
-/// lanes: one aligned 16-byte load per corner, indexed by the permutation's byte itself
-/// (4 KiB, shared by every seed).
-#[repr(align(16))]
-struct Rows([[f32; 4]; 256]);
-
-static ROWS: Rows = {
-    let mut rows = [[0.0f32; 4]; 256];
-    let mut i = 0;
-    while i < 256 {
-        let mut a = 0;
-        while a < 3 {
-            rows[i][a] = GRAD3[i & 15][a] as f32;
-            a += 1;
-        }
-        i += 1;
+    /// The dot products of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1` with the
+    /// offsets, in the shared kernel's order `(d_x·g_x + d_y·g_y) + d_z·g_z`, one corner per
+    /// lane.
+    #[inline]
+    fn dots3(&self, a: usize, b: usize, dx: m128, dy: m128, dz: m128) -> m128 {
+        let (gx, gy) = self.gradients_xy(a, b);
+        let [za, zb] = [a, b].map(|i| load_unaligned_m128(&self.pairs.0[i][1]));
+        let gz = move_low_high_m128(za, zb);
+        add_m128(
+            add_m128(mul_m128(dx, gx), mul_m128(dy, gy)),
+            mul_m128(dz, gz),
+        )
     }
-    Rows(rows)
-};
+}
 
 /// Lane `L` of `v` in every lane (`MASK` repeats `L` four times).
 #[inline]
@@ -158,24 +178,6 @@ fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
     Some((cells, f, s))
 }
 
-/// The dot products of four gradient rows with the offsets, in the shared kernel's order
-/// `(d_x·g_x + d_y·g_y) + d_z·g_z`, one corner per lane.
-#[inline]
-fn dots3(rows: [m128; 4], dx: m128, dy: m128, dz: m128) -> m128 {
-    let [r0, r1, r2, r3] = rows;
-    let l01 = unpack_low_m128(r0, r1); // g0x g1x g0y g1y
-    let h01 = unpack_high_m128(r0, r1); // g0z g1z 0 0
-    let l23 = unpack_low_m128(r2, r3);
-    let h23 = unpack_high_m128(r2, r3);
-    let gx = move_low_high_m128(l01, l23);
-    let gy = move_high_low_m128(l23, l01);
-    let gz = move_low_high_m128(h01, h23);
-    add_m128(
-        add_m128(mul_m128(dx, gx), mul_m128(dy, gy)),
-        mul_m128(dz, gz),
-    )
-}
-
 /// Perlin's `lerp(t, a, b) = a + t·(b − a)` of the pairs `(v0, v2)` and `(v1, v3)`, in lanes
 /// 0 and 1.
 #[inline]
@@ -195,7 +197,6 @@ fn finish(v: m128, t: m128) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use super::Kernel;
     use crate::lattice::{Perlin, sample_gradient};
 
     /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
@@ -252,7 +253,7 @@ mod tests {
     fn vector_kernel_is_the_shared_kernel_bit_for_bit() {
         for seed in [0, 1, 0xdead_beef] {
             let perlin = Perlin::new(seed);
-            let tables = Kernel(perlin.doubled());
+            let tables = perlin.kernel();
             let mut vector_path = [0usize; 2];
             for [x, y, z] in points(200_000) {
                 let expected2: f32 = sample_gradient(&perlin, [x, y]);
