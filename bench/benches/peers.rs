@@ -1,14 +1,22 @@
 //! bandnoise against the peer crates, in one run: ns/sample over the same 1024² grid for every
 //! workload of `bandnoise_bench`, then a table of each ratio to the fastest peer.
 //!
+//! Criterion measures each workload for seconds, one after the other, so on a shared machine
+//! a change of load between two measurements moves their ratio (by ±20% here). A second pass
+//! measures the ratios themselves: in each of [`ROUNDS`] rounds, every peer and bandnoise fill
+//! the same [`PAIRED_ROWS`] rows one after the other (milliseconds apart), the round's ratio
+//! is bandnoise's time over the fastest peer's of that round, and the table gives the median
+//! and the quartiles over rounds.
+//!
 //! `cargo bench -p bandnoise-bench --bench peers` (or `scripts/bench-peers.sh`, which also
 //! counts instructions with callgrind). With `-- --test` each workload runs once, unmeasured,
 //! and no table is printed.
 
+use std::hint::black_box;
 use std::path::PathBuf;
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
-use bandnoise_bench::{FUNCTIONS, IMPLEMENTATIONS, N, peer_function, workload};
+use bandnoise_bench::{FUNCTIONS, IMPLEMENTATIONS, N, Run, peer_function, workload};
 use criterion::{Criterion, Throughput};
 
 fn peers(c: &mut Criterion) {
@@ -103,11 +111,78 @@ fn table() {
     }
 }
 
+/// Rounds of the paired measurement.
+const ROUNDS: usize = 101;
+
+/// Grid rows every workload fills in a round (32·1024 samples).
+const PAIRED_ROWS: usize = 32;
+
+/// The seconds `run` takes to fill [`PAIRED_ROWS`] rows.
+fn seconds(run: &Run, out: &mut [f32]) -> f64 {
+    let start = Instant::now();
+    run(PAIRED_ROWS, out);
+    black_box(&*out);
+    start.elapsed().as_secs_f64()
+}
+
+/// The `q`-quantile of `v` (sorted in place), nearest rank.
+fn quantile(v: &mut [f64], q: f64) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[((v.len() - 1) as f64 * q).round() as usize]
+}
+
+/// The paired pass (module docs): the median ratio to the fastest peer and its quartiles.
+fn paired_table() {
+    let mut out = vec![0.0f32; N * N];
+    println!(
+        "\nratio to the fastest peer, paired: median [quartiles] of {ROUNDS} interleaved rounds of {PAIRED_ROWS} rows"
+    );
+    println!("| function | point ratio | batch ratio |");
+    println!("|---|---|---|");
+    for function in FUNCTIONS {
+        let peer = peer_function(function);
+        let peers: Vec<Run> = IMPLEMENTATIONS[2..]
+            .iter()
+            .filter_map(|&i| workload(peer, i))
+            .collect();
+        let ours = [IMPLEMENTATIONS[0], IMPLEMENTATIONS[1]].map(|i| workload(function, i));
+        if peers.is_empty() {
+            continue;
+        }
+        let mut ratios = [Vec::new(), Vec::new()];
+        // One round unmeasured, to warm caches and branch predictors.
+        for round in 0..=ROUNDS {
+            let fastest = peers
+                .iter()
+                .map(|run| seconds(run, &mut out))
+                .fold(f64::INFINITY, f64::min);
+            for (ratios, run) in ratios.iter_mut().zip(&ours) {
+                if let Some(run) = run {
+                    let t = seconds(run, &mut out);
+                    if round > 0 {
+                        ratios.push(t / fastest);
+                    }
+                }
+            }
+        }
+        let cell = |v: &mut Vec<f64>| {
+            if v.is_empty() {
+                return "–".to_string();
+            }
+            let (q1, m, q3) = (quantile(v, 0.25), quantile(v, 0.5), quantile(v, 0.75));
+            format!("{m:.2} [{q1:.2}–{q3:.2}]")
+        };
+        let [point, batch] = &mut ratios;
+        println!("| {function} | {} | {} |", cell(point), cell(batch));
+    }
+}
+
 fn main() {
     let mut c = Criterion::default().configure_from_args();
     peers(&mut c);
     c.final_summary();
     if !std::env::args().any(|a| a == "--test" || a == "--list") {
         table();
+        paired_table();
     }
 }
