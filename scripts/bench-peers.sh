@@ -2,10 +2,11 @@
 # bandnoise against the peer crates (noise 0.9, fastnoise-lite 1.1, noise-functions 0.8,
 # libnoise 1.2) over the same 1024² grid, in one run:
 #   1. criterion: ns/sample of every workload, then a table of ratios to the fastest peer;
-#   2. callgrind: instructions per sample of every workload (a figure that does not depend on
+#   2. paired: each ratio to the fastest peer, median of interleaved rounds (peers.rs docs);
+#   3. callgrind: instructions per sample of every workload (a figure that does not depend on
 #      the machine's load): each runs at 16 and 48 rows and the difference is divided by the
 #      32·1024 extra samples, so start-up work cancels out.
-# The workloads are in bench/src/lib.rs. Takes about 5 minutes on 2 cores.
+# The workloads are in bench/src/lib.rs. Takes about 6 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
