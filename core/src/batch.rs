@@ -18,8 +18,8 @@
 //! coefficients. Noises without an override (multiband, projected) evaluate lane by lane.
 //!
 //! Measured against the peer crates (`bench/README.md`): Perlin 2D in a grid costs 12
-//! instructions per sample in batch against 79 point by point (x86-64, where the point path is
-//! an SSE2 kernel), 0.9–1.1 ns against the fastest peer's 6.2–6.9.
+//! instructions per sample in batch against 71 point by point (x86-64, where the point path is
+//! an SSE2 kernel), 0.9–1.1 ns against the fastest peer's 6.2–8.0.
 //!
 //! Nothing here allocates: the lanes live on the stack (a 4D lattice chunk holds 16 × [`LANES`]
 //! corner values, 1 KiB in `f32`).

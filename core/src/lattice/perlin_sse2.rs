@@ -3,6 +3,11 @@
 //! products and the lerps in 4-lane vectors. The point kernel of [`sample_gradient`] does the
 //! same steps one number at a time.
 //!
+//! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
+//! then a gradient), and every lerp waits for the one before. The last two links of the chain
+//! are one lookup here, in a per-seed table of the gradients of neighbouring hash values
+//! ([`GradientPairs`]), which also hands the gradients over already split by axis.
+//!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
 //! bit; a test compares them over random and edge-case points. The intrinsics are the safe
