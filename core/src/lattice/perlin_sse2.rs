@@ -122,8 +122,7 @@ impl Kernel<'_> {
         // (1, 0), (1, 1) in lanes 0–3: the lerp along x pairs lanes, along y the halves.
         let x0 = self.dots3(aa, ab, splat::<0b00_00_00_00>(f), dy, dz);
         let x1 = self.dots3(ba, bb, splat::<0b00_00_00_00>(f1), dy, dz);
-        let sx = splat::<0b00_00_00_00>(s);
-        let r = add_m128(x0, mul_m128(sx, sub_m128(x1, x0)));
+        let r = lerp(splat::<0b00_00_00_00>(s), x0, x1);
         let q = lerp_halves(r, splat::<0b01_01_01_01>(s));
         Some(finish(q, splat::<0b10_10_10_10>(s)))
     }
@@ -183,12 +182,16 @@ fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
     Some((cells, f, s))
 }
 
-/// Perlin's `lerp(t, a, b) = a + t·(b − a)` of the pairs `(v0, v2)` and `(v1, v3)`, in lanes
-/// 0 and 1.
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)`, lane by lane.
+#[inline]
+fn lerp(t: m128, a: m128, b: m128) -> m128 {
+    add_m128(a, mul_m128(t, sub_m128(b, a)))
+}
+
+/// [`lerp`] of the pairs `(v0, v2)` and `(v1, v3)`, in lanes 0 and 1.
 #[inline]
 fn lerp_halves(v: m128, t: m128) -> m128 {
-    let b = move_high_low_m128(v, v);
-    add_m128(v, mul_m128(t, sub_m128(b, v)))
+    lerp(t, v, move_high_low_m128(v, v))
 }
 
 /// The last interpolation step, `lerp(t, v0, v1)`, then `+ 0.0` as
