@@ -70,7 +70,7 @@ pub fn to_f64<const D: usize>(p: [I16F16; D]) -> [f64; D] {
 /// Every lattice noise of the kernel, so a test can loop over all of them.
 #[derive(Clone, Debug)]
 pub enum Lattice {
-    /// Perlin's improved noise (boxed: its doubled permutation is 512 bytes).
+    /// Perlin's improved noise (boxed: 16.5 KiB on x86-64, with its SSE2 gradient table).
     Perlin(Box<Perlin>),
     /// Perlin's original noise.
     Original(OriginalPerlin),
