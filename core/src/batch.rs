@@ -113,8 +113,9 @@ impl<R: Real, const D: usize> Grid<R, D> {
         let mut index = [0usize; D];
         let mut rest = row;
         for (i, &size) in index.iter_mut().zip(&self.size).skip(1) {
-            *i = rest % size;
-            rest /= size;
+            // Sizes are non-zero here; `checked_` keeps a zero from being a panic path.
+            *i = rest.checked_rem(size).unwrap_or(0);
+            rest = rest.checked_div(size).unwrap_or(0);
         }
         self.point(index)
     }
@@ -127,10 +128,10 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     out: &mut [R],
 ) -> Result<(), Error> {
     check_len(grid.len(), out.len())?;
-    if grid.is_empty() {
+    let row_len = grid.size[0];
+    if row_len == 0 || grid.is_empty() {
         return Ok(());
     }
-    let row_len = grid.size[0];
     // Coordinates along axis 0 are the same for every row: compute them once per chunk column.
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
@@ -162,12 +163,14 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     }
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
-    for (c, chunk) in out.chunks_mut(LANES).enumerate() {
-        let start = c * LANES;
-        for (lane, axis) in lanes.iter_mut().zip(points) {
+    let mut axes = points.map(|axis| axis.chunks(LANES));
+    for chunk in out.chunks_mut(LANES) {
+        for (lane, axis) in lanes.iter_mut().zip(&mut axes) {
             // A short last chunk leaves the previous chunk's points in the unused lanes:
-            // they are evaluated and dropped.
-            lane[..chunk.len()].copy_from_slice(&axis[start..start + chunk.len()]);
+            // they are evaluated and dropped. (Copies by `zip`: no length to check.)
+            for (l, &x) in lane.iter_mut().zip(axis.next().unwrap_or(&[])) {
+                *l = x;
+            }
         }
         noise.sample_lanes(&lanes, &mut values);
         store_lanes(chunk, &values);
@@ -181,7 +184,11 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
 pub(crate) fn store_lanes<R: Real>(out: &mut [R], v: &[R; LANES]) {
     match <&mut [R; LANES]>::try_from(&mut *out) {
         Ok(whole) => *whole = *v,
-        Err(_) => out.copy_from_slice(&v[..out.len()]),
+        Err(_) => {
+            for (o, &x) in out.iter_mut().zip(v) {
+                *o = x;
+            }
+        }
     }
 }
 

@@ -35,6 +35,8 @@ pub(crate) mod sealed {
         /// multiply, where `mul_rn` needs 64 bits and a rounding). Other units are never passed
         /// (the callers' tables hold only these three).
         fn mul_unit(self, unit: Self) -> Self;
+        /// `self`, or 0 when it is NaN or ±∞ (fixed point: always `self`).
+        fn finite_or_zero(self) -> Self;
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -63,6 +65,11 @@ pub(crate) mod sealed {
                         self * unit
                     }
                 }
+                #[inline]
+                fn finite_or_zero(self) -> Self {
+                    // ∞ − ∞ and NaN − NaN are NaN, which compares unequal to 0.
+                    if self - self == 0.0 { self } else { 0.0 }
+                }
             }
         };
     }
@@ -74,6 +81,10 @@ pub(crate) mod sealed {
             // unit's bits are ±2^16 or 0: `>> 16` gives ±1 or 0. The kernels pass fractions in
             // (−2, 2), so the product cannot wrap.
             I16F16::from_bits(self.to_bits().wrapping_mul(unit.to_bits() >> 16))
+        }
+        #[inline]
+        fn finite_or_zero(self) -> Self {
+            self
         }
     }
 }
@@ -128,6 +139,20 @@ pub trait Real:
     fn from_i32(i: i32) -> Self;
     /// `num · 2^-shift`, exact whenever the result is representable (used for tables of
     /// gradients and lattice values, so that every number type starts from the same constants).
+    ///
+    /// Defined for every `shift`: otherwise floats round to nearest (a quotient below half the
+    /// smallest subnormal is ±0) and fixed point rounds toward −∞ (so `2⁻¹⁷` is 0 and `−2⁻¹⁷`
+    /// is `−2⁻¹⁶`); fixed point saturates when `num · 2^-shift` exceeds its range.
+    ///
+    /// ```
+    /// use bandnoise::{I16F16, Real};
+    ///
+    /// assert_eq!(f32::from_ratio(-3, 2), -0.75);
+    /// assert_eq!(f32::from_ratio(1, 126), f32::MIN_POSITIVE);
+    /// assert_eq!(f64::from_ratio(-7, 70), -7.0 * 2f64.powi(-70));
+    /// assert_eq!(I16F16::from_ratio(1, 80), I16F16::ZERO);
+    /// assert_eq!(I16F16::from_ratio(1 << 20, 0), I16F16::MAX);
+    /// ```
     fn from_ratio(num: i32, shift: u32) -> Self;
 
     /// Splits a coordinate into its lattice cell `floor(x)` and the fraction `x − floor(x)` in
@@ -199,6 +224,15 @@ pub trait Real:
     }
 }
 
+/// `num · 2^-shift` for shifts of 64 and more (beyond what `1u64 << shift` holds): exact in
+/// `f64` down to 2⁻¹⁰²² (`ldexp` scales by powers of two), so the caller's conversion to its type
+/// rounds once.
+#[cold]
+fn ratio_far(num: i32, shift: u32) -> f64 {
+    // Past 1100 every `i32` quotient is below half of f64's smallest subnormal: ±0.
+    libm::ldexp(num as f64, -(shift.min(1100) as i32))
+}
+
 /// Splits a float whose integer part does not fit `i32`, or that is not finite.
 #[cold]
 fn split_far(x: f64) -> (i32, f64) {
@@ -238,9 +272,13 @@ macro_rules! impl_real_float {
             }
             #[inline]
             fn from_ratio(num: i32, shift: u32) -> Self {
-                // Dividing by a power of two is exact (barring underflow, which cannot happen
-                // for the shifts used here).
-                num as $t / (1u64 << shift) as $t
+                if shift < 64 {
+                    // Dividing by a power of two rounds once: the quotient of the exact `num`
+                    // (exact whenever the result is representable, see the trait).
+                    num as $t / (1u64 << shift) as $t
+                } else {
+                    ratio_far(num, shift) as $t
+                }
             }
             #[inline]
             fn split(self) -> (i32, Self) {
@@ -415,7 +453,8 @@ impl Real for I16F16 {
         let bits = if shift <= 16 {
             (num as i64) << (16 - shift)
         } else {
-            (num as i64) >> (shift - 16)
+            // Rounds toward −∞; a shift of 63 already leaves only the sign of an `i32`.
+            (num as i64) >> (shift - 16).min(63)
         };
         I16F16::from_bits(bits.clamp(i32::MIN as i64, i32::MAX as i64) as i32)
     }

@@ -1,5 +1,6 @@
 //! Fractal sums with arbitrary octave counts, lacunarity, gain, coordinates and footprints:
-//! refused settings are errors; accepted ones never panic and stay within their bound.
+//! refused settings are errors; accepted ones never panic and stay within their bound; filtered
+//! sums are symmetric in their footprints, and NaN or ±∞ coordinates sample 0 there.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -45,12 +46,20 @@ fuzz_target!(|input: Input| {
         Octaves::<I16F16>::new(input.count, input.lacunarity, input.gain).expect("same checks");
     let f = Fractal::new(Perlin::new(1), octaves, kind);
     let bound = Noise::<f32, 3>::amplitude_bound(&f);
-    for v in [f.sample(p), f.sample_filtered(p, dx, dy)] {
+    let filtered = f.sample_filtered(p, dx, dy);
+    for v in [f.sample(p), filtered] {
         assert!(v.is_finite() && v.abs() <= bound, "{v} > {bound}");
     }
+    // The footprint is symmetric in dpdx and dpdy, NaN components included.
+    assert_eq!(filtered.to_bits(), f.sample_filtered(p, dy, dx).to_bits());
+    // NaN and ±∞ coordinates sample 0 along their axis.
+    let p0 = p.map(|c| if c.is_finite() { c } else { 0.0 });
+    assert_eq!(filtered.to_bits(), f.sample_filtered(p0, dx, dy).to_bits());
     let g = Fractal::new(MNoise::<61>::new(2), fixed, kind);
     let gb = Noise::<I16F16, 3>::amplitude_bound(&g);
-    for v in [g.sample(q), g.sample_filtered(q, qx, qy)] {
+    let filtered = g.sample_filtered(q, qx, qy);
+    for v in [g.sample(q), filtered] {
         assert!(v.to_num::<f32>().abs() <= gb, "{v} > {gb}");
     }
+    assert_eq!(filtered, g.sample_filtered(q, qy, qx));
 });

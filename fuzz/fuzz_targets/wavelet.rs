@@ -1,6 +1,9 @@
 //! Wavelet noise with arbitrary coordinates, normals and band lists (weights zero, NaN, huge):
 //! no panic; refused configurations are errors; accepted ones give finite values within their
-//! documented bounds (uniform distributions within [-1, 1]).
+//! documented bounds (uniform distributions within [-1, 1]); a NaN or ±∞ coordinate samples 0
+//! there, bit for bit (bands, multiband, projected); any finite non-zero normal, however large
+//! or small, is normalised to its own direction, and its power-of-two multiples give the same
+//! bits.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -38,6 +41,30 @@ fuzz_target!(|input: Input| {
     let u = unit_normal(n);
     let len2: f32 = u.iter().map(|x| x * x).sum();
     assert!((len2 - 1.0).abs() < 1e-4, "{n:?} → {u:?}");
+    assert_direction(n.map(f64::from), u.map(f64::from), 1e-6);
+    assert_direction(
+        nq.map(|c| c.to_num::<f64>()),
+        unit_normal(nq).map(|c| c.to_num::<f64>()),
+        2e-4,
+    );
+    // Power-of-two multiples that stay exact give the same unit normal and projection.
+    for k in [2f32.powi(64), 2f32.powi(-64)] {
+        let nk = n.map(|c| c * k);
+        if nk.iter().zip(&n).all(|(a, b)| a.is_finite() && a / k == *b) {
+            assert_eq!(unit_normal(nk), u, "{n:?} × {k}");
+            assert_eq!(
+                band3.sample_projected(p, nk).to_bits(),
+                proj.to_bits(),
+                "{n:?} × {k}"
+            );
+        }
+    }
+    // NaN and ±∞ coordinates sample 0 along their axis.
+    let p0 = p.map(|c| if c.is_finite() { c } else { 0.0 });
+    let same = |a: f32, b: f32| assert_eq!(a.to_bits(), b.to_bits(), "{p:?} vs {p0:?}");
+    same(band3.sample(p), band3.sample(p0));
+    same(band2.sample([p[0], p[1]]), band2.sample([p0[0], p0[1]]));
+    same(proj, band3.sample_projected(p0, n));
 
     let distribution = if input.uniform {
         Distribution::Uniform
@@ -64,8 +91,29 @@ fuzz_target!(|input: Input| {
             if input.uniform {
                 assert!(v.abs() <= 1.0 && w.abs() <= 1.0);
             }
+            same(v, m.sample(p0));
+            same(w, m.sample_projected(p0, n));
             let _: I16F16 = m.sample(q);
             let _: I16F16 = m.sample_projected(q, nq);
         }
     }
 });
+
+/// `unit` is `normal`'s direction within `tolerance` per component, for every finite non-zero
+/// normal (others project along z), checked against an f64 reference that scales first.
+fn assert_direction(normal: [f64; 3], unit: [f64; 3], tolerance: f64) {
+    let largest = normal.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+    let want = if largest > 0.0 && normal.iter().all(|c| c.is_finite()) {
+        let scaled = normal.map(|c| c / largest);
+        let len = scaled.iter().map(|c| c * c).sum::<f64>().sqrt();
+        scaled.map(|c| c / len)
+    } else {
+        [0.0, 0.0, 1.0]
+    };
+    for (got, want) in unit.iter().zip(want) {
+        assert!(
+            (got - want).abs() <= tolerance,
+            "{normal:?} → {unit:?}, want {want:?}"
+        );
+    }
+}

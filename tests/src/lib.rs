@@ -264,3 +264,84 @@ pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f
     }
     low / total
 }
+
+/// A number type's bad inputs, for the bad-input tests (`tests/tests/contract.rs`,
+/// `bad_input.rs`): the values a sweep of the public API from outside the crate found worth
+/// trying.
+pub trait Special: Real + std::fmt::Display {
+    /// The type's name, for messages.
+    const NAME: &'static str;
+    /// Bad coordinates, each with the coordinate it is documented to sample where the
+    /// [`Noise`] contract says so (NaN, ±∞ and −0.0 sample 0).
+    fn specials() -> Vec<(Self, Option<Self>)>;
+    /// Whether the value is `-0.0` (which no sample may return).
+    fn is_negative_zero(self) -> bool;
+    /// The nearest value to `x` (for random points in a moderate range).
+    fn from_f64(x: f64) -> Self;
+    /// The bits of the value as an `f64` (injective for all three types), to compare results
+    /// bit for bit.
+    fn bits(self) -> u64 {
+        self.to_f64().to_bits()
+    }
+}
+
+macro_rules! float_specials {
+    ($t:ty, $extra:expr) => {
+        impl Special for $t {
+            const NAME: &'static str = stringify!($t);
+            fn specials() -> Vec<(Self, Option<Self>)> {
+                let two31 = 2_147_483_648.0;
+                let tiny = <$t>::from_bits(1);
+                let mut v = vec![
+                    (<$t>::NAN, Some(0.0)),
+                    (<$t>::INFINITY, Some(0.0)),
+                    (<$t>::NEG_INFINITY, Some(0.0)),
+                    (-0.0, Some(0.0)),
+                    (1e30, None),
+                    (-1e30, None),
+                    (f32::MAX as $t, None),
+                    (f32::MIN as $t, None),
+                    (f32::MIN_POSITIVE as $t, None),
+                    (tiny, None),
+                    (-tiny, None),
+                    (two31, None),
+                    (-two31, None),
+                ];
+                v.extend($extra);
+                v
+            }
+            fn is_negative_zero(self) -> bool {
+                self == 0.0 && self.is_sign_negative()
+            }
+            fn from_f64(x: f64) -> Self {
+                x as $t
+            }
+        }
+    };
+}
+float_specials!(f32, Vec::<(f32, Option<f32>)>::new());
+float_specials!(
+    f64,
+    [
+        (f64::MAX, None),
+        (f64::MIN, None),
+        (f64::MIN_POSITIVE, None),
+        (f32::from_bits(1) as f64, None),
+    ]
+);
+
+impl Special for I16F16 {
+    const NAME: &'static str = "I16F16";
+    fn specials() -> Vec<(Self, Option<Self>)> {
+        [I16F16::MAX, I16F16::MIN, I16F16::DELTA, -I16F16::DELTA]
+            .into_iter()
+            .map(|x| (x, None))
+            .collect()
+    }
+    fn is_negative_zero(self) -> bool {
+        false
+    }
+    fn from_f64(x: f64) -> Self {
+        I16F16::saturating_from_num(x)
+    }
+}

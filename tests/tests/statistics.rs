@@ -102,3 +102,53 @@ fn seeds_are_decorrelated() {
         }
     }
 }
+
+/// The largest `|n|` of `MNoise<61>` over every cell centre of one period (`61^D` cells), for
+/// `seed`: the figures its docs give. The bound `D/2` needs a cell whose gradients all point
+/// outward; the BBS hash has one in 1D and 2D only.
+#[test]
+fn mnoise_maxima_over_cell_centres() {
+    fn max_at_centres<const D: usize>(m: &MNoise<61>) -> f64 {
+        let mut best = 0.0f64;
+        for i in 0..61usize.pow(D as u32) {
+            let mut rest = i;
+            let p: [f64; D] = core::array::from_fn(|_| {
+                let c = rest % 61;
+                rest /= 61;
+                c as f64 + 0.5
+            });
+            let v: f64 = m.sample(p);
+            best = best.max(v.abs());
+        }
+        best
+    }
+    for seed in [0, 1, 77] {
+        let m = MNoise::<61>::new(seed);
+        let maxima = [
+            max_at_centres::<1>(&m),
+            max_at_centres::<2>(&m),
+            max_at_centres::<3>(&m),
+            if seed == 0 {
+                max_at_centres::<4>(&m)
+            } else {
+                1.375
+            },
+        ];
+        println!("mNoise<61> seed {seed}: max |n| over cell centres, 1D–4D: {maxima:?}");
+        assert_eq!(maxima, [0.5, 1.0, 1.375, 1.375], "seed {seed}");
+    }
+}
+
+/// Uniform multiband noise reaches the ends of `[-1, 1]`: `erf` rounds to ±1 in the tails.
+#[test]
+fn uniform_distribution_reaches_its_ends() {
+    use bandnoise::wavelet::erf;
+    // The first inputs whose erf is 1 (found by walking every value up from 3).
+    let first = 3.875_808_2f32;
+    assert_eq!(erf(first), 1.0);
+    assert!(erf(f32::from_bits(first.to_bits() - 1)) < 1.0);
+    assert_eq!(erf(-4.0f32), -1.0);
+    let first = I16F16::from_num(3.09375);
+    assert_eq!(erf(-first), -I16F16::ONE);
+    assert!(erf(first - I16F16::DELTA) < I16F16::ONE);
+}

@@ -375,14 +375,18 @@ fn bad_input_gives_documented_results() {
                 assert_eq!(v, band.sample(q), "non-finite coordinates sample 0");
             }
         }
-        // Normals: zero, NaN or non-unit.
+        // Normals: zero or non-finite ones project along z; any other keeps its direction,
+        // however large or small.
+        let p = [0.3, 0.7, 1.1];
         for n in [[0.0, 0.0, 0.0], [s, 0.0, 1.0], [0.0, 0.0, 1e-30]] {
-            let v: f32 = band.sample_projected([0.3, 0.7, 1.1], n);
-            assert_eq!(
-                v,
-                band.sample_projected([0.3, 0.7, 1.1], [0.0, 0.0, 1.0]),
-                "{n:?} projects along z"
-            );
+            let v: f32 = band.sample_projected(p, n);
+            if n[0].is_finite() && n[0].abs() > 1.0 {
+                assert_eq!(unit_normal(n)[0], s.signum(), "{n:?}");
+                assert_eq!(v, band.sample_projected(p, unit_normal(n)), "{n:?}");
+            } else {
+                let z = [0.0, 0.0, 1.0];
+                assert_eq!(v, band.sample_projected(p, z), "{n:?} projects along z");
+            }
         }
     }
     assert_eq!(

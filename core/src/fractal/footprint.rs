@@ -19,9 +19,9 @@ pub(crate) fn footprint_len2<R: Real, const D: usize>(dpdx: &[R; D], dpdy: &[R; 
             .fold(R::ZERO, |acc, x| acc.saturating_add(x.saturating_mul(*x)))
     };
     let (a, b) = (len2(dpdx), len2(dpdy));
-    // NaN compares false: a NaN footprint falls through to the other, and if both are NaN it
-    // stays NaN, which `octaves_for` treats as no filtering.
-    if b > a { b } else { a }
+    // IEEE maxNum, symmetric: a NaN footprint (unknown) gives way to the other, and if both
+    // are NaN the result stays NaN, which `octaves_for` treats as no filtering.
+    if a.is_nan() || b > a { b } else { a }
 }
 
 /// pbrt's `n = clamp(−1 − ½·log2(len²), 0, max)`: `full = floor(n)` octaves in full, then

@@ -109,6 +109,11 @@ pub enum Kind {
 
 /// A fractal sum of octaves of a noise `N`, itself a [`Noise`].
 ///
+/// `N` may be any noise that keeps the [`Noise`] contract, a user's included: in fixed point
+/// every sum, product and ridge square saturates, so a noise beyond the crate's ranges (whose
+/// ridge term `(1 − |n|)²` passes I16F16's range from `|n| ≈ 182`) gives saturated values, never
+/// wrapped ones.
+///
 /// # Examples
 ///
 /// ```
@@ -231,9 +236,11 @@ impl<N, R: Real> Fractal<N, R> {
                 Kind::Turbulence => term = term.map(R::abs),
                 Kind::Ridged => {
                     for (t, w) in term.iter_mut().zip(weight.iter_mut()) {
+                        // Saturating: a noise beyond ±181 would overflow the square in
+                        // fixed point (the crate's noises stay within ±2).
                         let r = R::ONE - t.abs();
-                        let r = r * r * *w;
-                        *w = (r + r).clamp_to(R::ZERO, R::ONE);
+                        let r = r.saturating_mul(r).saturating_mul(*w);
+                        *w = r.saturating_add(r).clamp_to(R::ZERO, R::ONE);
                         *t = r;
                     }
                 }
@@ -275,7 +282,9 @@ impl<N, R: Real> Fractal<N, R> {
     /// adds the mean for the faded octave a second time; this does not.) Fbm and ridged octaves
     /// above the limit add nothing.
     ///
-    /// A zero or NaN footprint sums every octave; an infinite one none.
+    /// The footprint is symmetric in `dpdx` and `dpdy`. A footprint vector with a NaN
+    /// component is unknown and gives way to the other (IEEE `maxNum`); a zero footprint, or
+    /// both unknown, sums every octave; an infinite one none.
     ///
     /// # Contract
     ///

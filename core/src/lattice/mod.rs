@@ -19,9 +19,11 @@
 //! When every gradient component satisfies `|g_a| ≤ 1`,
 //! `|n| ≤ Σ_a Σ_c W_c |f_a − c_a| = Σ_a [(1 − s_a) f_a + s_a (1 − f_a)] ≤ D/2`
 //! (each bracket is at most ½, reached at `f_a = ½`). With unit gradients, Jensen's inequality
-//! gives `|n| ≤ (Σ_c W_c |f − c|²)^½ ≤ √D/2`. Both are attained at cell centres, so the
-//! [`Noise::amplitude_bound`]s add 2⁻¹⁰ for rounding (I16F16 rounds each product to 2⁻¹⁶).
-//! The measured maxima are in each type's docs.
+//! gives `|n| ≤ (Σ_c W_c |f − c|²)^½ ≤ √D/2`. Both are tight: a cell whose corner gradients
+//! all point outward reaches them at its centre. Whether a noise's hash produces such a cell
+//! depends on the noise, so the measured maxima are in each type's docs; the
+//! [`Noise::amplitude_bound`]s are the proved bounds plus 2⁻¹⁰ for rounding (I16F16 rounds each
+//! product to 2⁻¹⁶).
 //!
 //! [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
 
@@ -235,10 +237,10 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
     out: &mut [R],
 ) -> Result<(), Error> {
     batch::check_len(grid.len(), out.len())?;
-    if grid.is_empty() {
+    let width = grid.size[0];
+    if width == 0 || grid.is_empty() {
         return Ok(());
     }
-    let width = grid.size[0];
     let rows = out.len() / width;
     for block in (0..width).step_by(LANES * CHUNKS_PER_BLOCK) {
         let chunks = (width - block).div_ceil(LANES).min(CHUNKS_PER_BLOCK);
@@ -281,10 +283,11 @@ pub(crate) fn fill_grid_gradient<L: GradientLattice<D>, R: Real, const D: usize>
                         core::array::from_fn(|a| if a == 0 { xk.s } else { [along[a].2; LANES] });
                     lanes_in_several_cells(lattice, &cell, &f, &s)
                 };
-                batch::store_lanes(
-                    &mut out[row * width + start..][..LANES.min(width - start)],
-                    &v,
-                );
+                // In range by construction (`get_mut` keeps it provably panic-free).
+                let at = row * width + start;
+                if let Some(dst) = out.get_mut(at..at + LANES.min(width - start)) {
+                    batch::store_lanes(dst, &v);
+                }
             }
         }
     }
@@ -388,7 +391,7 @@ macro_rules! gradient_noise_impls {
 pub(crate) use gradient_noise_impls;
 
 /// What rounding may add to a bound that holds in exact arithmetic: the bounds here are
-/// attained (at cell centres), and I16F16's products round to 2⁻¹⁶, so an evaluation may exceed
+/// tight (a cell with outward gradients reaches them at its centre), and I16F16's products round to 2⁻¹⁶, so an evaluation may exceed
 /// them by a few ulps. The measured worst |I16F16 − f32| of any lattice noise is 18·2⁻¹⁶ (4D
 /// mNoise); 2⁻¹⁰ = 64·2⁻¹⁶ covers it with room.
 pub(crate) const ROUNDING: f32 = 1.0 / 1024.0;

@@ -18,7 +18,13 @@ use crate::{Noise, Real};
 
 use super::tile::{Tile2, Tile3};
 
-/// Coefficient storage a wavelet noise reads: the `f32` tiles and the quantized tiles.
+/// Coefficient storage a wavelet noise reads: the `f32` tiles and the quantized tiles, or a
+/// user's own.
+///
+/// Any coefficients are accepted: the weighted sums saturate in fixed point (a plain band's
+/// weights sum to 1, but rounding can overshoot a coefficient at the end of I16F16's range by
+/// an ulp; projected weights sum to up to 3), so an extreme tile gives ±`I16F16::MAX`, never a
+/// wrapped value. For the bounds to hold, `max_abs` must be the largest `|coefficient|`.
 pub trait TileData<const D: usize> {
     /// The side of the tile.
     const SIZE: usize;
@@ -427,17 +433,16 @@ impl<T> Wavelet<'_, T> {
                     for jx in 0..3 {
                         if mine(0, jx) {
                             let c = self.tile.flat(base + offset[0][jx][l]);
-                            row = row + weights[0][jx][l].mul_rn(c);
+                            row = row.saturating_add(weights[0][jx][l].mul_rn(c));
                         }
                     }
-                    plane = plane + weights[1][jy][l].mul_rn(row);
+                    plane = plane.saturating_add(weights[1][jy][l].mul_rn(row));
                 }
-                *s = *s
-                    + if D == 3 {
-                        weights[D - 1][jz][l].mul_rn(plane)
-                    } else {
-                        plane
-                    };
+                *s = s.saturating_add(if D == 3 {
+                    weights[D - 1][jz][l].mul_rn(plane)
+                } else {
+                    plane
+                });
             }
         }
     }

@@ -133,11 +133,18 @@ pub enum Distribution {
     /// Gaussian with mean 0 and variance 1 (the natural distribution of wavelet noise).
     #[default]
     Gaussian,
-    /// Uniform on `(-1, 1)`: the Gaussian value `g` becomes `erf(g/√2)` (§4.2).
+    /// Uniform on `[-1, 1]`: the Gaussian value `g` becomes `erf(g/√2)` (§4.2). The ends are
+    /// reached: `erf` is ±1 beyond `|g/√2| ≥ 4` and first rounds to ±1 at 3.8758 in `f32`
+    /// (3.09375 in I16F16), so the rare tail values beyond those are ±1 exactly.
     Uniform,
 }
 
 /// Multiband wavelet noise over a tile `T` (2D or 3D).
+///
+/// Sampling follows the [`Noise`] contract: never panics; a NaN or ±∞ coordinate is 0, so
+/// every band samples its own offset there; band `b` samples its band at `2^(b+1)·p + offset_b`
+/// (a float coordinate so large that this overflows is a multiple of 2³², and is taken as 0);
+/// the result is finite, never `-0.0`, and within [`amplitude_bound`](Noise::amplitude_bound).
 ///
 /// # Examples
 ///
@@ -248,6 +255,11 @@ impl<'t, T> Multiband<'t, T> {
     }
 
     /// `Σ_b w'_b f_b(p_b)` with `p_b = 2^(first+b+1) p + offset_b`, then the distribution.
+    ///
+    /// A scaled coordinate that is not finite (a NaN or ±∞ coordinate, or a float so large
+    /// that the scaling overflows) is 0 before the band's offset is added: each band samples
+    /// `offset_b`, as the [`Noise`] contract's "NaN and ±∞ are 0" asks. (An overflowing float
+    /// is a multiple of 2³² anyway, whose cell wraps to 0.)
     fn sum<R: Real, const D: usize>(&self, p: [R; D], which: usize, f: impl Fn([R; D]) -> R) -> R {
         let mut sum = R::ZERO;
         for (i, w) in self.scaled.iter().enumerate() {
@@ -263,6 +275,7 @@ impl<'t, T> Multiband<'t, T> {
             };
             let q: [R; D] = core::array::from_fn(|a| {
                 p[a].wrapping_mul(scale)
+                    .finite_or_zero()
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
             sum = sum.saturating_add(R::from_f32(w[which]).mul_rn(f(q)));
@@ -294,13 +307,14 @@ impl<T: TileData<3>> Multiband<'_, T> {
     ///
     /// # Contract
     ///
-    /// Never panics; coordinates and normals as [`Wavelet::sample_projected`]. The result is
+    /// Never panics; coordinates as [`sample`](Noise::sample) (a NaN or ±∞ coordinate is 0),
+    /// normals as [`Wavelet::sample_projected`] ([`unit_normal`](super::unit_normal)). The result is
     /// finite and within [`projected_bound`](Self::projected_bound) (within `[-1, 1]` for
     /// [`Distribution::Uniform`]); 0 when every band weight is 0.
     #[must_use]
     pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
         let n = super::projected::unit_normal(normal);
-        self.sum(p, 2, |q| self.band.sample_projected(q, n))
+        self.sum(p, 2, |q| self.band.sample_projected_unit(q, n))
     }
 
     /// A bound on `|sample_projected|`. The projected basis weights sum to 2 for an axis-aligned

@@ -34,20 +34,42 @@ fn bspline<R: Real>(t: R) -> R {
 
 /// The unit normal used for projection.
 ///
-/// A normal of any positive length is normalised. A normal with a non-finite component, or
-/// whose squared length is 0 or too small to normalise (below 2⁻¹⁶, where fixed point has no
-/// precision left), projects along z: `(0, 0, 1)`.
+/// A finite normal of any non-zero length is normalised: divided by its largest component
+/// first (so no squared length can overflow or underflow, in any number type), then by the
+/// length of the result, which lies in `[1, √3]`. Scaling a normal by a power of two that keeps
+/// it finite (and, in fixed point, unsaturated) therefore gives the same unit normal, bit for
+/// bit. A zero normal, or one with a NaN or infinite component, projects along z: `(0, 0, 1)`.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{I16F16, wavelet::unit_normal};
+///
+/// assert_eq!(unit_normal([0.0f32, 3.0, 4.0]), [0.0, 0.6, 0.8]);
+/// assert_eq!(unit_normal([1e30f32, 0.0, 0.0]), [1.0, 0.0, 0.0]);
+/// let big = I16F16::from_num(200);
+/// assert_eq!(unit_normal([big, I16F16::ZERO, I16F16::ZERO])[0], I16F16::ONE);
+/// assert_eq!(unit_normal([f32::NAN, 1.0, 0.0]), [0.0, 0.0, 1.0]);
+/// ```
 #[must_use]
 pub fn unit_normal<R: Real>(n: [R; 3]) -> [R; 3] {
-    let len2 = n
-        .iter()
-        .fold(R::ZERO, |acc, x| acc.saturating_add(x.saturating_mul(*x)));
-    let finite = !len2.is_nan() && len2 < R::MAX && n.iter().all(|x| !x.is_nan());
-    if !finite || len2 <= R::from_ratio(1, 16) {
-        return [R::ZERO, R::ZERO, R::ONE];
+    let along_z = [R::ZERO, R::ZERO, R::ONE];
+    if n.iter().any(|x| x.is_nan()) {
+        return along_z;
     }
+    let largest = n.iter().fold(R::ZERO, |m, x| {
+        let a = x.abs();
+        if a > m { a } else { m }
+    });
+    // ±∞ exceeds MAX; fixed point's MIN has abs MAX, which is fine.
+    if largest == R::ZERO || largest > R::MAX {
+        return along_z;
+    }
+    // Each component in [−1, 1], the largest ±1 exactly: the length is in [1, √3].
+    let scaled = n.map(|x| x.div(largest));
+    let len2 = scaled.iter().fold(R::ZERO, |acc, x| acc + x.mul_rn(*x));
     let len = len2.sqrt();
-    n.map(|x| x.div(len).clamp_to(-R::ONE, R::ONE))
+    scaled.map(|x| x.div(len).clamp_to(-R::ONE, R::ONE))
 }
 
 /// Block orientations for the up to 3 blocks per axis that a projected sample touches.
@@ -66,10 +88,11 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// # Contract
     ///
     /// Never panics. A NaN or ±∞ coordinate is 0 and cells beyond `i32` wrap, as for
-    /// [`Noise::sample`](crate::Noise::sample); the normal goes through [`unit_normal`] (zero,
-    /// tiny or non-finite normals project along z). The result is finite and at most three times
-    /// the tile's largest coefficient in magnitude (the basis weights sum to 2 along an
-    /// axis-aligned normal and below 3 for any normal, measured by the fuzz target `wavelet`).
+    /// [`Noise::sample`](crate::Noise::sample); the normal goes through [`unit_normal`] (any
+    /// finite non-zero normal keeps its direction; zero or non-finite normals project along z).
+    /// The result is finite and at most three times the tile's largest coefficient in magnitude
+    /// (the basis weights sum to 2 along an axis-aligned normal and below 3 for any normal,
+    /// measured by the fuzz target `wavelet`; fixed point saturates).
     ///
     /// # Examples
     ///
@@ -84,7 +107,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// ```
     #[must_use]
     pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
-        let nrm = unit_normal(normal);
+        self.sample_projected_unit(p, unit_normal(normal))
+    }
+
+    /// [`sample_projected`](Self::sample_projected) with a normal that [`unit_normal`] already
+    /// returned (multiband noise normalises once for all its bands).
+    pub(crate) fn sample_projected_unit<R: Real>(&self, p: [R; 3], nrm: [R; 3]) -> R {
         let n = T::SIZE as i32;
         let half = R::from_ratio(1, 1);
         let three_halves = R::from_ratio(3, 1);
@@ -124,7 +152,9 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         continue;
                     }
                     let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
-                    sum = sum + weight.mul_rn(self.fetch(g, &mut variants));
+                    // Saturating: the weights sum to less than 3, so a tile whose
+                    // coefficients exceed a third of fixed point's range could overflow.
+                    sum = sum.saturating_add(weight.mul_rn(self.fetch(g, &mut variants)));
                 }
             }
         }

@@ -1,5 +1,6 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise) in I16F16 and f32 on
+//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, batches, and the public
+//! helpers `from_ratio`, `unit_normal` and `erf`) in I16F16 and f32 on
 //! inputs the optimiser cannot see, and its panic handler calls a function that does not exist.
 //! If any panic path survives optimisation, the link fails. Built, not run (release, thumbv7em).
 #![no_std]
@@ -8,9 +9,12 @@
 use core::hint::black_box;
 use core::panic::PanicInfo;
 
+use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
-use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};
+use bandnoise::wavelet::{
+    Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
+};
 use bandnoise::{I16F16, Noise, NoiseGradient, Real};
 use cortex_m as _;
 use cortex_m_rt::entry;
@@ -52,6 +56,24 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         let m = Multiband::new(&TILE3_I16, 5, b, black_box(Distribution::Uniform));
         add(m.sample([p[0], p[1], p[2]]));
         add(m.sample_projected([p[0], p[1], p[2]], [p[1], p[0], p[3]]));
+    }
+    // The public helpers: every shift, any normal, any erf argument.
+    add(R::from_ratio(black_box(-7), black_box(u32::MAX)));
+    add(unit_normal([p[3], p[0], p[1]])[0]);
+    add(erf(p[2]));
+    // Batches: a grid and points, through every lane kernel of a lattice noise and a fractal.
+    let grid = Grid::new([p[0], p[1]], [p[2], p[3]], black_box([20, 3]));
+    let mut out = [R::ZERO; 60];
+    if Perlin::new(5).fill_grid(&grid, &mut out).is_ok() {
+        add(out.get(black_box(17)).copied().unwrap_or(R::ZERO));
+    }
+    let xs = black_box([p[0]; 20]);
+    let ys = black_box([p[3]; 20]);
+    if let Ok(o) = Octaves::<R>::new(black_box(3), black_box(2.0), black_box(0.5)) {
+        let f = Fractal::new(MNoise::<61>::new(3), o, black_box(Kind::Fbm));
+        if f.fill_points([&xs[..], &ys[..]], &mut out[..20]).is_ok() {
+            add(out.get(black_box(19)).copied().unwrap_or(R::ZERO));
+        }
     }
 }
 

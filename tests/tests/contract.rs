@@ -1,0 +1,370 @@
+//! The contract of every public sampling entry point, over the inputs of a bad-input sweep run
+//! from outside the crate: NaN, ±∞, ±1e30, ±`f32::MAX`, `MIN_POSITIVE`, a subnormal, −0.0 and
+//! ±2³¹ in `f32` and `f64` (`f64` also ±`f64::MAX`), and I16F16's `MAX`, `MIN` and ±`DELTA`, at
+//! each axis of random points and at every axis at once (`Special` in the test crate).
+//!
+//! For each entry point and number type it asserts what the docs promise:
+//! * no panic (the test profile keeps overflow checks on), no NaN, no −0.0, and the documented
+//!   bound (`amplitude_bound`, `projected_bound`, ±1 for `erf`);
+//! * a NaN, ±∞ or −0.0 coordinate samples 0 along its axis, bit for bit;
+//! * `fill_points` (hence `sample_lanes`) and `fill_grid` (with a bad origin or step) equal
+//!   `sample` at each point, bit for bit;
+//! * `sample_with_gradient` gives `sample`'s value and a finite gradient, the origin's for a
+//!   NaN, ±∞ or −0.0 coordinate;
+//! * `Fractal::sample_filtered` is symmetric in its two footprints, whatever they hold;
+//! * projection normalises any finite non-zero normal: a power-of-two multiple of a normal
+//!   (2¹⁰⁰ or 2⁻¹⁰⁰ times, 2¹⁴ in fixed point) gives the same unit normal and sample, bit for bit.
+//!
+//! [`every_noise`] is the list of subjects: a noise added to the crate is added there.
+
+use core::array::from_fn;
+
+use bandnoise::batch::{Grid, LANES};
+use bandnoise::fractal::{Fractal, Kind, Octaves};
+use bandnoise::prelude::*;
+use bandnoise::wavelet::{
+    Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tiling, Wavelet, erf,
+    unit_normal,
+};
+use bandnoise_tests::{Lattice, Rng, Special};
+
+/// `v` is a value the contract allows: not NaN, not −0.0, within `bound`.
+fn check_value<R: Special>(v: R, bound: f32, what: impl Fn() -> String) {
+    assert!(
+        !v.is_nan() && v.to_f64().abs() <= bound as f64,
+        "{}: {v} (bound {bound})",
+        what()
+    );
+    assert!(!v.is_negative_zero(), "{}: -0.0", what());
+}
+
+fn with<R: Copy, const D: usize>(mut p: [R; D], axis: usize, v: R) -> [R; D] {
+    p[axis] = v;
+    p
+}
+
+fn random_point<R: Special, const D: usize>(rng: &mut Rng) -> [R; D] {
+    from_fn(|_| R::from_f64(rng.f64_in(-50.0, 50.0)))
+}
+
+/// Each special at each axis of `bases` random points and at every axis at once, with the point
+/// it is documented to sample (if the contract says).
+fn bad_points<R: Special, const D: usize>(
+    rng: &mut Rng,
+    bases: usize,
+) -> Vec<([R; D], Option<[R; D]>)> {
+    let mut out = Vec::new();
+    for _ in 0..bases {
+        let base = random_point::<R, D>(rng);
+        for (s, same) in R::specials() {
+            for axis in 0..D {
+                out.push((with(base, axis, s), same.map(|z| with(base, axis, z))));
+            }
+            out.push(([s; D], same.map(|z| [z; D])));
+        }
+    }
+    out
+}
+
+/// `sample`, `fill_points` (and through it `sample_lanes`) and `fill_grid`.
+fn sweep_noise<R: Special, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &mut Rng) {
+    let bound = noise.amplitude_bound();
+    let what = |p: &[R; D]| format!("{name} {D}D {} at {p:?}", R::NAME);
+    let points = bad_points::<R, D>(rng, 3);
+    let values: Vec<R> = points.iter().map(|(p, _)| noise.sample(*p)).collect();
+    for ((p, same), v) in points.iter().zip(&values) {
+        check_value(*v, bound, || what(p));
+        if let Some(q) = same {
+            let w = noise.sample(*q);
+            assert_eq!(v.bits(), w.bits(), "{} vs {q:?}", what(p));
+        }
+    }
+
+    let axes: [Vec<R>; D] = from_fn(|a| points.iter().map(|(p, _)| p[a]).collect());
+    let mut out = vec![R::ZERO; points.len()];
+    noise
+        .fill_points(from_fn(|a| axes[a].as_slice()), &mut out)
+        .expect("lengths match");
+    for ((p, _), (o, v)) in points.iter().zip(out.iter().zip(&values)) {
+        assert_eq!(o.bits(), v.bits(), "fill_points: {}", what(p));
+    }
+
+    // Grids with a bad origin or step along one axis; a step that is no power-of-two fraction
+    // of a cell, rows of more than two chunks.
+    let size: [usize; D] = from_fn(|a| if a == 0 { 2 * LANES + 3 } else { 2 });
+    for (s, _) in R::specials() {
+        for axis in 0..D {
+            let origin = random_point::<R, D>(rng);
+            let step: [R; D] = from_fn(|a| R::from_f64(0.37 + 0.11 * a as f64));
+            for grid in [
+                Grid::new(with(origin, axis, s), step, size),
+                Grid::new(origin, with(step, axis, s), size),
+            ] {
+                let mut out = vec![R::ZERO; grid.len()];
+                noise.fill_grid(&grid, &mut out).expect("length matches");
+                for (i, o) in out.iter().enumerate() {
+                    let mut rest = i;
+                    let index: [usize; D] = from_fn(|a| {
+                        let k = rest % size[a];
+                        rest /= size[a];
+                        k
+                    });
+                    let p = grid.point(index);
+                    check_value(*o, bound, || format!("fill_grid {}", what(&p)));
+                    assert_eq!(o.bits(), noise.sample(p).bits(), "fill_grid {}", what(&p));
+                }
+            }
+        }
+    }
+}
+
+/// `sample_with_gradient` (given as `gradient`) against `sample`.
+fn sweep_gradient<R: Special, const D: usize, N: Noise<R, D>>(
+    name: &str,
+    noise: &N,
+    gradient: impl Fn([R; D]) -> (R, [R; D]),
+    rng: &mut Rng,
+) {
+    for (p, same) in bad_points::<R, D>(rng, 3) {
+        let what = || format!("{name} {D}D {} gradient at {p:?}", R::NAME);
+        let (v, g) = gradient(p);
+        assert_eq!(v.bits(), noise.sample(p).bits(), "{}", what());
+        assert!(
+            g.iter().all(|d| d.to_f64().is_finite()),
+            "{}: {g:?}",
+            what()
+        );
+        if let Some(q) = same {
+            let (w, h) = gradient(q);
+            assert_eq!(
+                (v.bits(), g.map(R::bits)),
+                (w.bits(), h.map(R::bits)),
+                "{}",
+                what()
+            );
+        }
+    }
+}
+
+/// `Fractal::sample_filtered` with bad points and bad footprints.
+fn sweep_filtered<R: Special, const D: usize, N: Noise<R, D>>(
+    name: &str,
+    f: &Fractal<N, R>,
+    rng: &mut Rng,
+) {
+    let bound = f.amplitude_bound();
+    let mut footprints: Vec<[R; D]> = vec![
+        [R::ZERO; D],
+        from_fn(|_| R::from_f64(rng.f64_in(-0.3, 0.3))),
+        with([R::ZERO; D], 0, R::from_f64(0.0625)),
+    ];
+    footprints.extend(
+        R::specials()
+            .into_iter()
+            .map(|(s, _)| with([R::ZERO; D], 0, s)),
+    );
+    for (p, same) in bad_points::<R, D>(rng, 1) {
+        for dx in &footprints {
+            for dy in &footprints {
+                let what = || format!("{name} {D}D {} filtered at {p:?}, {dx:?}, {dy:?}", R::NAME);
+                let v = f.sample_filtered(p, *dx, *dy);
+                check_value(v, bound, what);
+                let swapped = f.sample_filtered(p, *dy, *dx);
+                assert_eq!(v.bits(), swapped.bits(), "{} swapped", what());
+                if let Some(q) = same {
+                    assert_eq!(
+                        v.bits(),
+                        f.sample_filtered(q, *dx, *dy).bits(),
+                        "{}",
+                        what()
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Normals with every component a multiple of 2⁻⁸ in `[-1, 1]`, not all 0, so that their
+/// power-of-two multiples are exact in every type.
+fn exact_normal<R: Special>(rng: &mut Rng) -> [R; 3] {
+    loop {
+        let n: [i32; 3] = from_fn(|_| rng.i32_in(-256, 257));
+        if n != [0; 3] {
+            return n.map(|c| R::from_ratio(c, 8));
+        }
+    }
+}
+
+/// Powers of two by which a normal of components at most 1 can be scaled exactly: beyond what
+/// a squared length survives, in each type.
+fn normal_scales<R: Special>() -> Vec<R> {
+    if R::NAME == "I16F16" {
+        // Squares overflow from 181 on.
+        [1, 4, 8, 14].map(|k| R::from_i32(1 << k)).to_vec()
+    } else {
+        // 2^±100 overflows or underflows the squares in f32, 2^±600 in f64.
+        let mut s = [-100, -60, 60, 100]
+            .map(|k| R::from_f32(2f32.powi(k)))
+            .to_vec();
+        if R::NAME == "f64" {
+            s.push(R::from_ratio(1, 600));
+        }
+        s
+    }
+}
+
+/// Projected sampling (`project(p, normal)`) within `bound`.
+fn sweep_projected<R: Special>(
+    name: &str,
+    project: impl Fn([R; 3], [R; 3]) -> R,
+    bound: f32,
+    rng: &mut Rng,
+) {
+    let mut normals: Vec<[R; 3]> = vec![
+        [R::ZERO; 3],
+        [R::ZERO, R::ZERO, R::ONE],
+        [R::ONE, R::ZERO, R::ZERO],
+        exact_normal(rng),
+    ];
+    let n = exact_normal::<R>(rng);
+    for (s, _) in R::specials() {
+        normals.extend((0..3).map(|a| with(n, a, s)));
+        normals.push([s; 3]);
+    }
+    for (p, same) in bad_points::<R, 3>(rng, 1) {
+        for n in &normals {
+            let what = || format!("{name} {} projected at {p:?} normal {n:?}", R::NAME);
+            let v = project(p, *n);
+            check_value(v, bound, what);
+            if let Some(q) = same {
+                assert_eq!(v.bits(), project(q, *n).bits(), "{}", what());
+            }
+        }
+    }
+    // Any finite non-zero normal is normalised, huge and tiny ones included.
+    for _ in 0..20 {
+        let n = exact_normal::<R>(rng);
+        let u = unit_normal(n);
+        let len2: f64 = u.iter().map(|c| c.to_f64() * c.to_f64()).sum();
+        assert!((len2 - 1.0).abs() < 1e-3, "{n:?} → {u:?}");
+        let p = random_point::<R, 3>(rng);
+        let v = project(p, n);
+        for k in normal_scales::<R>() {
+            let nk = n.map(|c| c * k);
+            let what = || format!("{name} {} normal {n:?} × {k}", R::NAME);
+            assert_eq!(unit_normal(nk).map(R::bits), u.map(R::bits), "{}", what());
+            assert_eq!(project(p, nk).bits(), v.bits(), "{}", what());
+        }
+    }
+}
+
+/// Every sampling entry point of the crate in the number type `R`.
+fn every_noise<R: Special>(rng: &mut Rng) {
+    // Lattice noises, 1D–4D, and the gradients of the gradient noises.
+    for (name, n) in Lattice::all(5) {
+        sweep_noise::<R, 1, _>(name, &n, rng);
+        sweep_noise::<R, 2, _>(name, &n, rng);
+        sweep_noise::<R, 3, _>(name, &n, rng);
+        sweep_noise::<R, 4, _>(name, &n, rng);
+        if n.sample_with_gradient([R::ZERO]).is_some() {
+            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
+            sweep_gradient::<R, 1, _>(name, &n, g, rng);
+            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
+            sweep_gradient::<R, 2, _>(name, &n, g, rng);
+            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
+            sweep_gradient::<R, 3, _>(name, &n, g, rng);
+            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
+            sweep_gradient::<R, 4, _>(name, &n, g, rng);
+        }
+    }
+
+    // Fractal sums of every kind, plain and filtered.
+    for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
+        let f = Fractal::new(Perlin::new(3), Octaves::<R>::default(), kind);
+        let name = &format!("{kind:?} of perlin");
+        sweep_noise::<R, 1, _>(name, &f, rng);
+        sweep_noise::<R, 2, _>(name, &f, rng);
+        sweep_noise::<R, 3, _>(name, &f, rng);
+        sweep_noise::<R, 4, _>(name, &f, rng);
+        sweep_filtered::<R, 2, _>(name, &f, rng);
+        sweep_filtered::<R, 3, _>(name, &f, rng);
+    }
+
+    // Wavelet bands over the default tiles, in both tilings, and the quantized tiles.
+    for tiling in [Tiling::Varied, Tiling::Periodic] {
+        let name = &format!("wavelet {tiling:?}");
+        sweep_noise::<R, 2, _>(name, &Wavelet::new(&TILE2, 6).with_tiling(tiling), rng);
+        sweep_noise::<R, 3, _>(name, &Wavelet::new(&TILE3, 6).with_tiling(tiling), rng);
+    }
+    sweep_noise::<R, 2, _>("wavelet i16", &Wavelet::new(&TILE2_I16, 6), rng);
+    sweep_noise::<R, 3, _>("wavelet i16", &Wavelet::new(&TILE3_I16, 6), rng);
+    // Projected: at most three times the tile's largest coefficient.
+    let band = Wavelet::new(&TILE3, 6);
+    let b = 3.0 * Noise::<R, 3>::amplitude_bound(&band);
+    sweep_projected::<R>("wavelet", |p, n| band.sample_projected(p, n), b, rng);
+    let band = Wavelet::new(&TILE3_I16, 6);
+    let b = 3.0 * Noise::<R, 3>::amplitude_bound(&band);
+    sweep_projected::<R>("wavelet i16", |p, n| band.sample_projected(p, n), b, rng);
+
+    // Multiband noise: both distributions; default bands, bands below band 0 (scales that
+    // fixed point cannot represent), 16 bands up to the highest.
+    let band_lists = [
+        Bands::default(),
+        Bands::new(-20, &[1.0, 0.5, 0.25]).expect("valid"),
+        Bands::new(8, &[1.0; 16]).expect("valid"),
+    ];
+    for distribution in [Distribution::Gaussian, Distribution::Uniform] {
+        for bands in &band_lists {
+            let name = &format!("multiband {distribution:?} from {}", bands.first());
+            let m2 = Multiband::new(&TILE2, 8, bands.clone(), distribution);
+            let m3 = Multiband::new(&TILE3, 8, bands.clone(), distribution);
+            sweep_noise::<R, 2, _>(name, &m2, rng);
+            sweep_noise::<R, 3, _>(name, &m3, rng);
+            let b = m3.projected_bound();
+            sweep_projected::<R>(name, |p, n| m3.sample_projected(p, n), b, rng);
+        }
+        // A fractal sum over multiband noise.
+        let m = Multiband::new(&TILE2, 8, Bands::default(), distribution);
+        let f = Fractal::fbm(m, Octaves::<R>::new(3, 2.0, 0.5).expect("valid"));
+        let name = &format!("fbm of multiband {distribution:?}");
+        sweep_noise::<R, 2, _>(name, &f, rng);
+        sweep_filtered::<R, 2, _>(name, &f, rng);
+    }
+
+    // The error function behind the uniform distribution.
+    for (s, _) in R::specials() {
+        let v = erf(s);
+        check_value(v, 1.0, || format!("erf({s}) in {}", R::NAME));
+    }
+}
+
+#[test]
+fn every_entry_point_keeps_its_contract_in_f32() {
+    every_noise::<f32>(&mut Rng::from_env(140));
+}
+
+#[test]
+fn every_entry_point_keeps_its_contract_in_f64() {
+    every_noise::<f64>(&mut Rng::from_env(141));
+}
+
+#[test]
+fn every_entry_point_keeps_its_contract_in_fixed_point() {
+    every_noise::<I16F16>(&mut Rng::from_env(142));
+}
+
+#[test]
+fn erf_of_the_infinities_and_nan() {
+    assert_eq!(erf(f32::INFINITY), 1.0);
+    assert_eq!(erf(f64::NEG_INFINITY), -1.0);
+    assert_eq!(erf(f32::NAN).to_bits(), 0);
+}
+
+/// The test profile must keep overflow checks on, or fixed point's overflows would wrap
+/// silently in these tests instead of failing them.
+#[test]
+#[allow(arithmetic_overflow, clippy::no_effect)]
+fn overflow_checks_are_on() {
+    let r = std::panic::catch_unwind(|| I16F16::MAX + std::hint::black_box(I16F16::ONE));
+    assert!(r.is_err(), "the test profile lost its overflow checks");
+}
