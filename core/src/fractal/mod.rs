@@ -111,7 +111,7 @@ pub enum Kind {
 ///
 /// `N` may be any noise that keeps the [`Noise`] contract, a user's included: in fixed point
 /// every sum, product and ridge square saturates, so a noise beyond the crate's ranges (whose
-/// ridge term `(1 − |n|)²` passes I16F16's range from `|n| ≈ 182`) gives saturated values, never
+/// ridge term `(1 − |n|)²` leaves I16F16's range for `|n| > 182`) gives saturated values, never
 /// wrapped ones.
 ///
 /// # Examples
@@ -236,8 +236,8 @@ impl<N, R: Real> Fractal<N, R> {
                 Kind::Turbulence => term = term.map(R::abs),
                 Kind::Ridged => {
                     for (t, w) in term.iter_mut().zip(weight.iter_mut()) {
-                        // Saturating: a noise beyond ±181 would overflow the square in
-                        // fixed point (the crate's noises stay within ±2).
+                        // Saturating: a user's noise beyond ±182 would overflow the square
+                        // in fixed point (the crate's noises stay within ±2).
                         let r = R::ONE - t.abs();
                         let r = r.saturating_mul(r).saturating_mul(*w);
                         *w = r.saturating_add(r).clamp_to(R::ZERO, R::ONE);

@@ -390,9 +390,9 @@ macro_rules! gradient_noise_impls {
 }
 pub(crate) use gradient_noise_impls;
 
-/// What rounding may add to a bound that holds in exact arithmetic: the bounds here are
-/// tight (a cell with outward gradients reaches them at its centre), and I16F16's products round to 2⁻¹⁶, so an evaluation may exceed
-/// them by a few ulps. The measured worst |I16F16 − f32| of any lattice noise is 18·2⁻¹⁶ (4D
+/// What rounding may add to a bound that holds in exact arithmetic: the bounds here are tight
+/// (a cell with outward gradients reaches them at its centre), and I16F16's products round to
+/// 2⁻¹⁶, so an evaluation may exceed them by a few ulps. The measured worst |I16F16 − f32| of any lattice noise is 18·2⁻¹⁶ (4D
 /// mNoise); 2⁻¹⁰ = 64·2⁻¹⁶ covers it with room.
 pub(crate) const ROUNDING: f32 = 1.0 / 1024.0;
 

@@ -308,9 +308,9 @@ impl<T: TileData<3>> Multiband<'_, T> {
     /// # Contract
     ///
     /// Never panics; coordinates as [`sample`](Noise::sample) (a NaN or ±∞ coordinate is 0),
-    /// normals as [`Wavelet::sample_projected`] ([`unit_normal`](super::unit_normal)). The result is
-    /// finite and within [`projected_bound`](Self::projected_bound) (within `[-1, 1]` for
-    /// [`Distribution::Uniform`]); 0 when every band weight is 0.
+    /// normals as [`Wavelet::sample_projected`] ([`unit_normal`](super::unit_normal)). The
+    /// result is finite and within [`projected_bound`](Self::projected_bound) (within `[-1, 1]`
+    /// for [`Distribution::Uniform`]); 0 when every band weight is 0.
     #[must_use]
     pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
         let n = super::projected::unit_normal(normal);
