@@ -11,7 +11,8 @@ pub mod count;
 pub mod led;
 
 use bandnoise::fractal::{Fractal, Octaves};
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::hash::{CellHash, CellRng, Poisson};
+use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};
 use bandnoise::{I16F16, Noise, Real};
 
@@ -19,7 +20,7 @@ use bandnoise::{I16F16, Noise, Real};
 pub const POINTS: u32 = 64;
 
 /// The number of checksums [`checksums`] produces.
-pub const COUNT: usize = 2 * (6 * 4 + 6);
+pub const COUNT: usize = 2 * (6 * 4 + 9);
 
 /// Raw bits of a sample, the same for every number type's meaning of "bit-identical".
 pub trait Bits: Real {
@@ -116,6 +117,25 @@ fn all<R: Bits>(out: &mut [u32]) {
         f.add(multi.sample_projected(point::<R, 3>(i, 100), n).bits());
     }
     push(f.0);
+    if let Ok(p) = Periodic::new(Perlin::new(4), [5, 256, 1000]) {
+        push(checksum::<R, 3>(&p, 2000));
+    }
+    if let Ok(p) = Periodic::new(ValueNoise::new(4), [3, 300]) {
+        push(checksum::<R, 2>(&p, 2000));
+    }
+    // The cell hash and the cell generator: a hash, two uniforms and a Poisson count per cell.
+    let mut f = Fnv::new();
+    let hash = CellHash::new(5);
+    let poisson = Poisson::new(3.5).ok();
+    for i in 0..POINTS as i32 {
+        let cell = [i * 7919 - 250_000, i.wrapping_mul(-104_729), i];
+        f.add(hash.hash(cell));
+        let mut rng = CellRng::new(&hash, cell);
+        f.add(rng.uniform::<R>().bits());
+        f.add(rng.signed_uniform::<R>().bits());
+        f.add(poisson.as_ref().map_or(u32::MAX, |p| rng.poisson(p)));
+    }
+    push(f.0);
 }
 
 /// The name of each checksum, in order.
@@ -151,6 +171,9 @@ pub const NAMES: [&str; COUNT] = {
         "wavelet 3D",
         "multiband uniform 3D",
         "multiband projected",
+        "periodic perlin 3D",
+        "periodic value 2D",
+        "cell hash and generator",
     ];
     let mut names = [""; COUNT];
     let mut i = 0;

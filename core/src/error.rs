@@ -35,6 +35,16 @@ pub enum Error {
     },
     /// A first band outside `-24..=8` (frequencies from 2⁻²⁴ to 2⁸ cycles per unit).
     FirstBand(i32),
+    /// A period outside `1..=65536` cells (see [`Periodic`](crate::lattice::Periodic)).
+    Period {
+        /// The axis.
+        axis: usize,
+        /// The period given.
+        period: u32,
+    },
+    /// A Poisson mean that is not finite or not in `(0, 32]` (see
+    /// [`Poisson`](crate::hash::Poisson)).
+    PoissonMean(f32),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -66,6 +76,13 @@ impl fmt::Display for Error {
                 )
             }
             Error::FirstBand(b) => write!(f, "first band {b} is outside -24..=8"),
+            Error::Period { axis, period } => {
+                write!(
+                    f,
+                    "period {period} along axis {axis} is outside 1..=65536 cells"
+                )
+            }
+            Error::PoissonMean(m) => write!(f, "Poisson mean {m} must be finite and in (0, 32]"),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")
             }

@@ -1,12 +1,13 @@
 //! Every lattice noise, 1D–4D, in f32 and I16F16, with arbitrary bit patterns as coordinates and
 //! seeds: no panic, never NaN or -0.0, within the documented bound; fixed point and f32 agree
 //! within 2⁻¹¹ where the input is exact in both; gradients are finite; the batch path
-//! (`sample_lanes`) equals `sample` bit for bit.
+//! (`sample_lanes`) equals `sample` bit for bit. Periodic noise with arbitrary periods: refused
+//! outside 1..=65536, otherwise within the bound and periodic bit for bit in fixed point.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use bandnoise::{I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
@@ -14,6 +15,7 @@ use libfuzzer_sys::fuzz_target;
 struct Input {
     seed: u32,
     bits: [u32; 4],
+    periods: [u32; 3],
 }
 
 fn check<N>(noise: &N, floats: [f32; 4], fixed: [I16F16; 4], exact: bool)
@@ -87,6 +89,40 @@ where
     assert!(g.iter().all(|d| d.abs() < I16F16::from_num(64)));
 }
 
+/// `noise` wrapped to `periods`: refused for a documented reason, or bounded and periodic.
+fn periodic<N: Clone>(noise: &N, periods: [u32; 3], floats: [f32; 4], fixed: [I16F16; 4])
+where
+    Periodic<N, 3>: Noise<f32, 3> + Noise<I16F16, 3>,
+{
+    let Ok(n) = Periodic::new(noise.clone(), periods) else {
+        assert!(
+            periods.iter().any(|&p| p == 0 || p > 65536),
+            "{periods:?} refused"
+        );
+        return;
+    };
+    let p = [floats[0], floats[1], floats[2]];
+    let bound = Noise::<f32, 3>::amplitude_bound(&n);
+    let v: f32 = n.sample(p);
+    assert!(!v.is_nan() && v.abs() <= bound, "{periods:?} {p:?}: {v}");
+    let q = [fixed[0], fixed[1], fixed[2]];
+    let w: I16F16 = n.sample(q);
+    assert!(w.to_num::<f32>().abs() <= bound);
+    // n(q + P) == n(q) along each axis, where q + P fits I16F16.
+    for a in 0..3 {
+        let shift = I16F16::checked_from_num(periods[a]);
+        if let Some(moved) = shift.and_then(|s| q[a].checked_add(s)) {
+            let mut r = q;
+            r[a] = moved;
+            assert_eq!(
+                Noise::<I16F16, 3>::sample(&n, r),
+                w,
+                "{periods:?} {q:?} axis {a}"
+            );
+        }
+    }
+}
+
 fuzz_target!(|input: Input| {
     let floats = input.bits.map(f32::from_bits);
     let fixed = input.bits.map(|b| I16F16::from_bits(b as i32));
@@ -102,4 +138,8 @@ fuzz_target!(|input: Input| {
     gradients(&Perlin::new(s), floats, fixed);
     gradients(&MNoise::<61>::new(s), floats, fixed);
     gradients(&OriginalPerlin::new(s), floats, fixed);
+    periodic(&&Perlin::new(s), input.periods, floats, fixed);
+    periodic(&ValueNoise::new(s), input.periods, floats, fixed);
+    periodic(&MNoise::<61>::new(s), input.periods, floats, fixed);
+    periodic(&CNoise::new(s), input.periods, floats, fixed);
 });

@@ -21,6 +21,7 @@ use core::array::from_fn;
 
 use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Kind, Octaves};
+use bandnoise::lattice::Periodic;
 use bandnoise::prelude::*;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tiling, Wavelet, erf,
@@ -277,6 +278,29 @@ fn every_noise<R: Special>(rng: &mut Rng) {
             sweep_gradient::<R, 4, _>(name, &n, g, rng);
         }
     }
+
+    // Periodic lattice noise: periods short, odd, natural and beyond the hash's own.
+    let perlin = Perlin::new(2);
+    let name = "periodic perlin";
+    sweep_noise::<R, 1, _>(name, &Periodic::new(&perlin, [3]).expect("valid"), rng);
+    sweep_noise::<R, 2, _>(name, &Periodic::new(&perlin, [5, 256]).expect("valid"), rng);
+    sweep_noise::<R, 3, _>(
+        name,
+        &Periodic::new(&perlin, [1, 7, 1000]).expect("valid"),
+        rng,
+    );
+    let p4 = Periodic::new(&perlin, [65536, 2, 9, 300]).expect("valid");
+    sweep_noise::<R, 4, _>(name, &p4, rng);
+    sweep_gradient::<R, 4, _>(name, &p4, |p| p4.sample_with_gradient(p), rng);
+    let m = Periodic::new(MNoise::<61>::new(3), [100, 13]).expect("valid");
+    sweep_noise::<R, 2, _>("periodic mnoise", &m, rng);
+    sweep_gradient::<R, 2, _>("periodic mnoise", &m, |p| m.sample_with_gradient(p), rng);
+    let o = Periodic::new(OriginalPerlin::new(3), [17, 4, 3]).expect("valid");
+    sweep_noise::<R, 3, _>("periodic original", &o, rng);
+    let c = Periodic::new(CNoise::new(3), [17, 4, 3]).expect("valid");
+    sweep_noise::<R, 3, _>("periodic cnoise", &c, rng);
+    let v = Periodic::new(ValueNoise::new(3), [17, 4]).expect("valid");
+    sweep_noise::<R, 2, _>("periodic value", &v, rng);
 
     // Fractal sums of every kind, plain and filtered.
     for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {

@@ -1,8 +1,11 @@
 //! The Blum-Blum-Shub hash against a 64-bit integer reference, its integer and f32 paths against
-//! each other (exhaustively over every integer f32 holds exactly), and the chained hashes.
+//! each other (exhaustively over every integer f32 holds exactly), and the chained hashes. The
+//! well-mixed cell hash's avalanche and neighbour correlation, and the cell generator's
+//! uniformity, Poisson counts and independence, over 10⁶ cells each (figures printed).
 
-use bandnoise::hash::{Bbs, PERLIN_2002, Permutation};
-use bandnoise_tests::Rng;
+use bandnoise::hash::{Bbs, CellHash, CellRng, PERLIN_2002, Permutation, Poisson};
+use bandnoise::{I16F16, Real};
+use bandnoise_tests::{Rng, correlation};
 
 /// `(x mod m)² mod m` in 64-bit integers, straight from the definition.
 fn reference(x: i64, m: i64) -> i64 {
@@ -133,4 +136,185 @@ fn perlin_permutation_is_pbrts_noise_perm() {
     sorted.sort_unstable();
     assert!(sorted.iter().enumerate().all(|(i, &v)| v as usize == i));
     assert_eq!(Permutation::new(0).get(256 + 3), 91);
+}
+
+/// Strict avalanche: flipping any input bit (of the cell, or of the seed) flips each output bit
+/// with probability 0.5 ± 0.02, over 10⁶ random cells.
+#[test]
+fn cell_hash_avalanches() {
+    const CELLS: usize = 1_000_000;
+    let mut rng = Rng::from_env(150);
+    // flips[input bit][output bit]: 96 cell bits (3D), then 32 seed bits.
+    let mut flips = vec![[0u32; 32]; 128];
+    let count = |flips: &mut [u32; 32], diff: u32| {
+        for (j, f) in flips.iter_mut().enumerate() {
+            *f += diff >> j & 1;
+        }
+    };
+    for _ in 0..CELLS {
+        let seed = rng.next_u64() as u32;
+        let cell: [i32; 3] = core::array::from_fn(|_| rng.next_u64() as i32);
+        let h = CellHash::new(seed);
+        let base = h.hash(cell);
+        for bit in 0..96 {
+            let mut c = cell;
+            c[bit / 32] ^= 1 << (bit % 32);
+            count(&mut flips[bit], base ^ h.hash(c));
+        }
+        for bit in 0..32 {
+            count(
+                &mut flips[96 + bit],
+                base ^ CellHash::new(seed ^ 1 << bit).hash(cell),
+            );
+        }
+    }
+    let (mut worst, mut at) = (0.0f64, (0, 0));
+    for (i, row) in flips.iter().enumerate() {
+        for (j, &f) in row.iter().enumerate() {
+            let d = (f as f64 / CELLS as f64 - 0.5).abs();
+            if d > worst {
+                (worst, at) = (d, (i, j));
+            }
+        }
+    }
+    println!(
+        "cell hash avalanche over {CELLS} cells: worst |P(flip) − 0.5| = {worst:.4} (input bit {}, output bit {})",
+        at.0, at.1
+    );
+    assert!(worst <= 0.02, "{worst} at {at:?}");
+}
+
+/// The hashes of neighbouring cells (and of neighbouring seeds) are uncorrelated.
+#[test]
+fn neighbouring_cells_hash_independently() {
+    const CELLS: usize = 1_000_000;
+    let mut rng = Rng::from_env(151);
+    let h = CellHash::new(5);
+    let unit = |x: u32| x as f64 / 4_294_967_296.0;
+    let cells: Vec<[i32; 3]> = (0..CELLS)
+        .map(|_| core::array::from_fn(|_| rng.i32_in(-100_000, 100_000)))
+        .collect();
+    let base: Vec<f64> = cells.iter().map(|&c| unit(h.hash(c))).collect();
+    let mut worst = 0.0f64;
+    for axis in 0..3 {
+        let next: Vec<f64> = cells
+            .iter()
+            .map(|&c| {
+                let mut n = c;
+                n[axis] += 1;
+                unit(h.hash(n))
+            })
+            .collect();
+        worst = worst.max(correlation(&base, &next).abs());
+    }
+    let seeds: Vec<f64> = cells
+        .iter()
+        .map(|&c| unit(CellHash::new(6).hash(c)))
+        .collect();
+    worst = worst.max(correlation(&base, &seeds).abs());
+    println!("cell hash: worst |correlation| of neighbouring cells and seeds {worst:.5}");
+    // The standard error of a correlation over 10⁶ pairs is 0.001.
+    assert!(worst < 0.005, "{worst}");
+}
+
+/// χ² of `n` values in `[0, 1)` over 64 bins.
+fn chi_squared(values: impl Iterator<Item = f64>) -> f64 {
+    let mut bins = [0u64; 64];
+    let mut n = 0u64;
+    for v in values {
+        assert!((0.0..1.0).contains(&v), "{v}");
+        bins[(v * 64.0) as usize] += 1;
+        n += 1;
+    }
+    let expected = n as f64 / 64.0;
+    bins.iter()
+        .map(|&b| (b as f64 - expected) * (b as f64 - expected) / expected)
+        .sum()
+}
+
+#[test]
+fn cell_numbers_are_uniform_exact_and_independent() {
+    const CELLS: usize = 1_000_000;
+    let mut rng = Rng::from_env(152);
+    let h = CellHash::new(9);
+    let cells: Vec<[i32; 2]> = (0..CELLS)
+        .map(|_| core::array::from_fn(|_| rng.i32_in(-1_000_000, 1_000_000)))
+        .collect();
+    // The first two draws of every cell, in f64.
+    let draws: Vec<[f64; 2]> = cells
+        .iter()
+        .map(|&c| {
+            let mut r = CellRng::new(&h, c);
+            [r.uniform(), r.uniform()]
+        })
+        .collect();
+    // χ² with 63 degrees of freedom: mean 63, standard deviation 11.2; 130 is 6 of them.
+    let chi_first = chi_squared(draws.iter().map(|d| d[0]));
+    let chi_second = chi_squared(draws.iter().map(|d| d[1]));
+    let signed = chi_squared(cells.iter().map(|&c| {
+        let v: f64 = CellRng::new(&h, c).signed_uniform();
+        assert!((-1.0..1.0).contains(&v));
+        (v + 1.0) / 2.0
+    }));
+    // Independence: successive draws of a cell, and the first draws of neighbouring cells.
+    let first: Vec<f64> = draws.iter().map(|d| d[0]).collect();
+    let second: Vec<f64> = draws.iter().map(|d| d[1]).collect();
+    let next_cell: Vec<f64> = cells
+        .iter()
+        .map(|&[x, y]| CellRng::new(&h, [x + 1, y]).uniform())
+        .collect();
+    let r_draws = correlation(&first, &second);
+    let r_cells = correlation(&first, &next_cell);
+    println!(
+        "cell generator over {CELLS} cells: χ²(63) first draw {chi_first:.1}, second {chi_second:.1}, signed {signed:.1}; correlation of successive draws {r_draws:+.5}, of neighbouring cells {r_cells:+.5}"
+    );
+    for chi in [chi_first, chi_second, signed] {
+        assert!(chi < 130.0, "{chi}");
+    }
+    assert!(r_draws.abs() < 0.005 && r_cells.abs() < 0.005);
+
+    // The same value in every number type, up to its precision.
+    for &c in cells.iter().take(10_000) {
+        let a: f32 = CellRng::new(&h, c).uniform();
+        let b: f64 = CellRng::new(&h, c).uniform();
+        let q: I16F16 = CellRng::new(&h, c).uniform();
+        assert_eq!(a as f64, b);
+        assert_eq!(q.to_f64(), (b * 65536.0).floor() / 65536.0);
+        let s: f32 = CellRng::new(&h, c).signed_uniform();
+        let t: f64 = CellRng::new(&h, c).signed_uniform();
+        assert_eq!(s as f64, t);
+    }
+}
+
+#[test]
+fn poisson_counts_have_the_right_mean_and_variance() {
+    const CELLS: usize = 1_000_000;
+    let h = CellHash::new(10);
+    for mean in [0.25f32, 1.0, 3.0, 8.0, 32.0] {
+        let p = Poisson::new(mean).expect("valid mean");
+        let (mut s1, mut s2, mut at_cap) = (0.0f64, 0.0f64, 0u32);
+        for i in 0..CELLS as i32 {
+            let k = CellRng::new(&h, [i, 17]).poisson(&p);
+            assert!(k <= p.cap());
+            at_cap += (k == p.cap()) as u32;
+            s1 += k as f64;
+            s2 += (k * k) as f64;
+        }
+        let m = s1 / CELLS as f64;
+        let var = s2 / CELLS as f64 - m * m;
+        let lambda = mean as f64;
+        println!(
+            "Poisson({mean}): mean {m:.4}, variance {var:.4} over {CELLS} cells; cap {} (reached {at_cap} times)",
+            p.cap()
+        );
+        // Standard errors: sqrt(λ/n) for the mean, about λ·sqrt(2/n) for the variance.
+        let n = CELLS as f64;
+        assert!((m - lambda).abs() < 5.0 * (lambda / n).sqrt(), "mean {m}");
+        let se_var = (lambda * (2.0 * lambda + 1.0) / n).sqrt();
+        assert!((var - lambda).abs() < 5.0 * se_var, "variance {var}");
+        assert!(p.cap() < 96);
+    }
+    for bad in [0.0f32, -1.0, 32.5, f32::NAN, f32::INFINITY] {
+        assert!(Poisson::new(bad).is_err(), "{bad}");
+    }
 }

@@ -4,13 +4,22 @@
 //!   tables, in integers or exactly in `f32`.
 //! * [`Permutation`]: Ken Perlin's 2002 permutation of `0..256` (pbrt §10.6.1's `NoisePerm`),
 //!   reshuffled for other seeds.
+//! * [`CellHash`]: a well-mixed 32-bit hash of an integer cell, for noises that need more than
+//!   8 bits per cell; [`CellRng`] and [`Poisson`]: a cell's own random numbers, exact dyadic
+//!   uniforms and capped Poisson counts.
 //!
 //! Both are *chained* over the axes of a lattice point. The chain order is part of each noise's
-//! definition and is documented there.
+//! definition and is documented there; the chains themselves (one cell, the corners of a cube,
+//! periodic wraps) are one crate-internal seam, `chain.rs`, that every lattice noise uses.
 
 mod bbs;
+mod cell;
+pub(crate) mod chain;
 mod perm;
+mod rng;
 pub(crate) mod seed;
 
 pub use bbs::Bbs;
+pub use cell::CellHash;
 pub use perm::{PERLIN_2002, Permutation};
+pub use rng::{CellRng, Poisson};

@@ -7,10 +7,12 @@
 //! 3D hash at `z = 0` is the 2D hash too, which makes the noise *dimension reducible*:
 //! `noise3(x, y, 0) == noise2(x, y)`, bit for bit.
 
-use super::kernel::{MAX_CORNERS, Quintic, hash_corners_last_first};
+use super::kernel::{MAX_CORNERS, Quintic};
+use super::periodic::WrapCorners;
 use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
 use crate::Real;
 use crate::batch::LANES;
+use crate::hash::chain::{self, ChainHash, Order, Wrap};
 use crate::hash::{Bbs, Permutation, seed::splitmix64};
 
 /// `Σ_a ±d_a` with the sign of axis `a` from bit `a` of `h`.
@@ -128,8 +130,9 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
             let c = Bbs::<M>::reduce(cell[a]) + self.offset[a];
             cells[a] = if c >= M { c - M } else { c };
         }
-        hash_corners_last_first(cells, self.inner[D - 1], |h, c, k| {
-            Bbs::<M>::step(h + c + k)
+        let upper = cells.map(|c| c + 1);
+        chain::corners(Order::LastFirst, self.inner[D - 1], cells, upper, |h, c| {
+            Bbs::<M>.step(h, c)
         })
     }
     #[inline]
@@ -141,9 +144,14 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
                 if c >= M { c - M } else { c }
             })
         });
-        hash_corners_last_first(cells, [self.inner[D - 1]; LANES], |h, c, k| {
-            core::array::from_fn(|l| Bbs::<M>::step(h[l] + c[l] + k))
-        })
+        let upper = cells.map(|c| c.map(|c| c + 1));
+        chain::corners(
+            Order::LastFirst,
+            [self.inner[D - 1]; LANES],
+            cells,
+            upper,
+            |h, c| core::array::from_fn(|l| Bbs::<M>.step(h[l], c[l])),
+        )
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
@@ -155,7 +163,20 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
     }
 }
 
-gradient_noise_impls!(MNoise<M>, [const M: u32], half_dims);
+gradient_noise_impls!(MNoise<M>, [const M: u32], |_, d| half_dims(d));
+
+impl<const M: u32, const D: usize> WrapCorners<D> for MNoise<M> {
+    /// The seed's translation moves the lattice within the period, so a period of `M` is the
+    /// noise itself.
+    #[inline]
+    fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
+        let shift = core::array::from_fn(|a| self.offset[a]);
+        let (lower, upper) = wrap.corners(cell, shift);
+        chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
+            Wrap::<D>::fold(&Bbs::<M>, h, c)
+        })
+    }
+}
 
 /// Olano's **cNoise**: corner gradients with a permutation hash.
 ///
@@ -208,8 +229,10 @@ impl<const D: usize> GradientLattice<D> for CNoise {
     type Fade = Quintic;
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
-        let cells = cell.map(|c| (c & 255) as u32);
-        hash_corners_last_first(cells, self.inner[D - 1], |h, c, k| self.perm.get(h + c + k))
+        let (lower, upper) = chain::natural::<Permutation, D>(cell);
+        chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
+            self.perm.step(h, c)
+        })
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
@@ -221,4 +244,14 @@ impl<const D: usize> GradientLattice<D> for CNoise {
     }
 }
 
-gradient_noise_impls!(CNoise, [], half_dims);
+gradient_noise_impls!(CNoise, [], |_, d| half_dims(d));
+
+impl<const D: usize> WrapCorners<D> for CNoise {
+    #[inline]
+    fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = wrap.corners(cell, [0; D]);
+        chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
+            Wrap::<D>::fold(&self.perm, h, c)
+        })
+    }
+}

@@ -1,6 +1,6 @@
 //! The machinery every lattice noise shares: splitting a point into a cell and a fraction,
-//! hashing the `2^D` corners of the cell with shared prefixes, fading, and multilinear
-//! interpolation (with its analytic gradient).
+//! fading, and multilinear interpolation (with its analytic gradient). The corners are hashed
+//! through the crate's hashing seam (`hash/chain.rs`).
 //!
 //! Corners are indexed by a bit mask: bit `a` set means the upper corner along axis `a`.
 //! Interpolation runs along axis 0 first, then 1, …, exactly in the order of Perlin's reference
@@ -8,8 +8,7 @@
 
 use crate::Real;
 
-/// Corners of a 4D cell, the most any noise here uses.
-pub(crate) const MAX_CORNERS: usize = 16;
+pub(crate) use crate::hash::chain::MAX_CORNERS;
 
 /// Splits every coordinate into a cell and a fraction in `[0, 1)` (see [`Real::split`]).
 #[inline]
@@ -74,53 +73,6 @@ impl Fade for Cubic {
 #[inline]
 pub(crate) fn fade_all<F: Fade, R: Real, const D: usize>(f: [R; D]) -> [R; D] {
     f.map(F::fade)
-}
-
-/// Hashes every corner of a cell with a chain that takes axis 0 innermost:
-/// `h = step(…step(step(start, x), y)…)`, Perlin's `p[p[p[x] + y] + z]` order.
-/// `cells` are already reduced to the hash's period; each axis step is shared by all corners
-/// with the same lower axes, so 3D costs 2 + 4 + 8 steps.
-#[inline]
-pub(crate) fn hash_corners_x_first<const D: usize>(
-    cells: [u32; D],
-    start: u32,
-    step: impl Fn(u32, u32) -> u32,
-) -> [u32; MAX_CORNERS] {
-    let mut h = [0u32; MAX_CORNERS];
-    h[0] = start;
-    for (a, &c) in cells.iter().enumerate() {
-        let bit = 1 << a;
-        for m in 0..bit {
-            h[m | bit] = step(h[m], c + 1);
-            h[m] = step(h[m], c);
-        }
-    }
-    h
-}
-
-/// Hashes every corner of a cell with a chain that takes the last axis innermost:
-/// `h = step(…step(step(start, w), z)…, x)`, Olano's `hash(x + hash(y + hash(z)))` order, which
-/// makes a noise with the last coordinate 0 equal to the noise of one dimension less.
-///
-/// `step(h, c, k)` hashes `h` with the cell `c` plus `k` (0 for the lower corner, 1 for the
-/// upper). `T` is one hash (`u32`) or one per lane (`[u32; LANES]`), so the point and the batch
-/// kernels share this chain.
-#[inline]
-pub(crate) fn hash_corners_last_first<T: Copy, const D: usize>(
-    cells: [T; D],
-    start: T,
-    step: impl Fn(T, T, u32) -> T,
-) -> [T; MAX_CORNERS] {
-    let mut h = [start; MAX_CORNERS];
-    for a in (0..D).rev() {
-        let bit = 1 << a;
-        for j in 0..(1 << (D - 1 - a)) {
-            let m = j << (a + 1);
-            h[m | bit] = step(h[m], cells[a], 1);
-            h[m] = step(h[m], cells[a], 0);
-        }
-    }
-    h
 }
 
 /// The offset from corner `m` to the point: `f − corner`.

@@ -30,6 +30,7 @@
 mod corner;
 pub(crate) mod kernel;
 mod original;
+mod periodic;
 mod perlin;
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 mod perlin_sse2;
@@ -37,6 +38,7 @@ mod value;
 
 pub use corner::{CNoise, MNoise};
 pub use original::OriginalPerlin;
+pub use periodic::Periodic;
 pub use perlin::Perlin;
 pub use value::ValueNoise;
 
@@ -100,6 +102,39 @@ pub(crate) trait GradientLattice<const D: usize> {
             }
         }
         h
+    }
+}
+
+/// A reference to a lattice is that lattice (so `Periodic<&Perlin, D>` shares one table).
+impl<L: GradientLattice<D>, const D: usize> GradientLattice<D> for &L {
+    type Fade = L::Fade;
+    #[inline]
+    fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
+        (**self).corner_hashes(cell)
+    }
+    #[inline]
+    fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
+        (**self).dot(h, d)
+    }
+    #[inline]
+    fn gradient<R: Real>(&self, h: u32) -> [R; D] {
+        (**self).gradient(h)
+    }
+    #[inline]
+    fn sample_point<R: Real>(&self, p: [R; D]) -> R {
+        (**self).sample_point(p)
+    }
+    #[inline]
+    fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+        L::point_kernel_for_scattered_lanes::<R>()
+    }
+    #[inline]
+    fn dot_with<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
+        (**self).dot_with(g, d)
+    }
+    #[inline]
+    fn corner_hashes_lanes(&self, cell: &[[i32; LANES]; D]) -> [[u32; LANES]; MAX_CORNERS] {
+        (**self).corner_hashes_lanes(cell)
     }
 }
 
@@ -346,7 +381,7 @@ pub(crate) fn sample_gradient_with_gradient<L: GradientLattice<D>, R: Real, cons
 }
 
 /// Implements `Noise` and `NoiseGradient` for a gradient lattice type, in every dimension it
-/// has a `GradientLattice` for.
+/// has a `GradientLattice` for. `$bound(&self, D)` is the amplitude bound.
 macro_rules! gradient_noise_impls {
     ($ty:ty, [$($generics:tt)*], $bound:expr) => {
         impl<R: crate::Real, const D: usize, $($generics)*> crate::Noise<R, D> for $ty
@@ -358,7 +393,7 @@ macro_rules! gradient_noise_impls {
                 crate::lattice::GradientLattice::<D>::sample_point(self, p)
             }
             fn amplitude_bound(&self) -> f32 {
-                $bound(D)
+                $bound(self, D)
             }
             #[inline]
             fn sample_lanes(

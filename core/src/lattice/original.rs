@@ -5,9 +5,11 @@
 //! unit ball, normalised, from SplitMix64), stored as `i16` with 14 fraction bits so every number
 //! type starts from the same gradients.
 
-use super::kernel::{Cubic, MAX_CORNERS, hash_corners_x_first};
+use super::kernel::{Cubic, MAX_CORNERS};
+use super::periodic::WrapCorners;
 use super::{GradientLattice, gradient_noise_impls};
 use crate::Real;
+use crate::hash::chain::{self, ChainHash, Order, Wrap};
 use crate::hash::{Permutation, seed::splitmix64};
 
 /// Fraction bits of the stored gradients.
@@ -130,8 +132,8 @@ where
     type Fade = Cubic;
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
-        let cells = cell.map(|c| (c & 255) as u32);
-        hash_corners_x_first(cells, 0, |h, c| self.perm.get(h + c))
+        let (lower, upper) = chain::natural::<Permutation, D>(cell);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.perm.step(h, c))
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
@@ -152,7 +154,17 @@ fn sqrt_dims_half(dims: usize) -> f32 {
     libm::sqrtf(dims as f32) * 0.5 + super::ROUNDING
 }
 
-gradient_noise_impls!(OriginalPerlin, [], sqrt_dims_half);
+gradient_noise_impls!(OriginalPerlin, [], |_, d| sqrt_dims_half(d));
+
+impl<const D: usize> WrapCorners<D> for OriginalPerlin {
+    #[inline]
+    fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = wrap.corners(cell, [0; D]);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| {
+            Wrap::<D>::fold(&self.perm, h, c)
+        })
+    }
+}
 
 #[cfg(test)]
 mod tests {

@@ -8,16 +8,17 @@
 //! In `f32` on x86-64, 2D and 3D sampling runs an SSE2 version of the same kernel
 //! (`perlin_sse2.rs`) with the same values; see [`Perlin`]'s performance notes.
 
-use super::kernel::{MAX_CORNERS, Quintic, hash_corners_x_first, sum_of_products};
+use super::kernel::{MAX_CORNERS, Quintic, sum_of_products};
+use super::periodic::WrapCorners;
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 use super::perlin_sse2;
 use super::{GradientLattice, gradient_noise_impls, half_dims, sample_gradient, signed};
 use crate::Real;
-use crate::hash::Permutation;
+use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
 
 /// Perlin's improved noise in 1 to 4 dimensions.
 ///
-/// * **Hash**: the [`Permutation`] of the seed (seed 0 is Perlin's 2002 table), folded with x
+/// * **Hash**: the [`Permutation`](crate::hash::Permutation) of the seed (seed 0 is Perlin's 2002 table), folded with x
 ///   innermost: `p[(p[(p[x] + y) & 255] + z) & 255]`, each cell reduced mod 256 (period 256).
 /// * **Gradients**: 3D uses Perlin's reference selection from `h & 15` (the 12 cube edges).
 ///   2D uses the same function with `z = 0` (edges projected onto the plane: diagonals and axes).
@@ -45,9 +46,9 @@ use crate::hash::Permutation;
 /// ```
 #[derive(Clone)]
 pub struct Perlin {
-    /// The seed's [`Permutation`] repeated twice, as in Perlin's reference code (`p[i + 256] =
+    /// The seed's [`Permutation`](crate::hash::Permutation) repeated twice, as in Perlin's reference code (`p[i + 256] =
     /// p[i]`): the hash chain's indices `p[x] + y + 1` stay below 512 without a `& 255`.
-    p: [u8; 512],
+    p: Doubled,
     /// The SSE2 kernel's gradients of neighbouring hash values (16 KiB), derived from `p`.
     #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
     pairs: perlin_sse2::GradientPairs,
@@ -67,17 +68,10 @@ impl Perlin {
     /// `static NOISE: Perlin = Perlin::new(7);` builds the table at compile time.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        let perm = Permutation::new(seed);
-        let table = perm.table();
-        let mut p = [0u8; 512];
-        let mut i = 0;
-        while i < 512 {
-            p[i] = table[i & 255];
-            i += 1;
-        }
+        let p = Doubled::new(seed);
         Self {
             #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-            pairs: perlin_sse2::GradientPairs::new(&p),
+            pairs: perlin_sse2::GradientPairs::new(&p.0),
             p,
         }
     }
@@ -87,16 +81,25 @@ impl Perlin {
     #[inline]
     pub(super) fn kernel(&self) -> perlin_sse2::Kernel<'_> {
         perlin_sse2::Kernel {
-            p: &self.p,
+            p: &self.p.0,
             pairs: &self.pairs,
         }
     }
 
     #[inline]
     fn corners<const D: usize>(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
-        let cells = cell.map(|c| (c & 255) as u32);
-        // h < 256 (a table entry) and c ≤ 256: the index is below 512.
-        hash_corners_x_first(cells, 0, |h, c| u32::from(self.p[(h + c) as usize]))
+        let (lower, upper) = chain::natural::<Doubled, D>(cell);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.p.step(h, c))
+    }
+}
+
+impl<const D: usize> WrapCorners<D> for Perlin {
+    #[inline]
+    fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = wrap.corners(cell, [0; D]);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| {
+            Wrap::<D>::fold(&self.p, h, c)
+        })
     }
 }
 
@@ -104,7 +107,7 @@ impl core::fmt::Debug for Perlin {
     /// The permutation, once.
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         f.debug_struct("Perlin")
-            .field("perm", &&self.p[..256])
+            .field("perm", &&self.p.0[..256])
             .finish()
     }
 }
@@ -321,7 +324,7 @@ impl GradientLattice<4> for Perlin {
     }
 }
 
-gradient_noise_impls!(Perlin, [], half_dims);
+gradient_noise_impls!(Perlin, [], |_, d| half_dims(d));
 
 #[cfg(test)]
 mod tests {

@@ -5,12 +5,12 @@
 //! and visible grid structure (Lewis 1989 §2; Olano 2005 §2). It is here as the baseline the
 //! better noises are compared against.
 
-use super::kernel::{
-    Fade, MAX_CORNERS, Quintic, fade_all, hash_corners_x_first, interpolate, split_point,
-};
+use super::kernel::{Fade, MAX_CORNERS, Quintic, fade_all, interpolate, split_point};
+use super::periodic::WrapCorners;
 use super::{interpolate_lanes, split_lanes};
 use crate::batch::{LANES, lane};
 use crate::hash::Permutation;
+use crate::hash::chain::{self, ChainHash, Order, Wrap};
 use crate::{Noise, Real};
 
 /// Value noise in 1 to 4 dimensions.
@@ -51,12 +51,24 @@ impl Default for ValueNoise {
     }
 }
 
-impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
+impl ValueNoise {
+    /// The lattice values' hashes at the corners of `cell` (Perlin's chain, axis 0 innermost).
     #[inline]
-    fn sample(&self, p: [R; D]) -> R {
+    fn corners<const D: usize>(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = chain::natural::<Permutation, D>(cell);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.perm.step(h, c))
+    }
+
+    /// The noise at `p` with the corners hashed by `corners` (the plain chain, or a wrapped
+    /// one for [`Periodic`](super::Periodic)).
+    #[inline]
+    pub(super) fn sample_corners<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
+    ) -> R {
         let (cell, f) = split_point(p);
-        let cells = cell.map(|c| (c & 255) as u32);
-        let h = hash_corners_x_first(cells, 0, |h, c| self.perm.get(h + c));
+        let h = corners(cell);
         let mut v = [R::ZERO; MAX_CORNERS];
         for m in 0..(1 << D) {
             v[m] = R::from_ratio(2 * h[m] as i32 - 255, 8);
@@ -64,26 +76,53 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
         interpolate(v, &fade_all::<Quintic, R, D>(f)).canonical()
     }
 
-    fn amplitude_bound(&self) -> f32 {
-        255.0 / 256.0 + super::ROUNDING
-    }
-
+    /// [`sample_corners`](Self::sample_corners) over [`LANES`] points, bit-identical to it.
     #[inline]
     #[allow(
         clippy::needless_range_loop,
         reason = "the lane index transposes: it addresses cells and corner values alike"
     )]
-    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+    pub(super) fn sample_corners_lanes<R: Real, const D: usize>(
+        &self,
+        p: &[[R; LANES]; D],
+        out: &mut [R; LANES],
+        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
+    ) {
         let (cell, f) = split_lanes(p);
         let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
         for l in 0..LANES {
-            let cells = lane(&cell, l).map(|c| (c & 255) as u32);
-            let h = hash_corners_x_first(cells, 0, |h, c| self.perm.get(h + c));
+            let h = corners(lane(&cell, l));
             for m in 0..(1 << D) {
                 v[m][l] = R::from_ratio(2 * h[m] as i32 - 255, 8);
             }
         }
         interpolate_lanes(&mut v, &f.map(|fa| fa.map(Quintic::fade)));
         *out = v[0].map(R::canonical);
+    }
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        self.sample_corners(p, |cell| self.corners(cell))
+    }
+
+    fn amplitude_bound(&self) -> f32 {
+        255.0 / 256.0 + super::ROUNDING
+    }
+
+    #[inline]
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        self.sample_corners_lanes(p, out, |cell| self.corners(cell));
+    }
+}
+
+impl<const D: usize> WrapCorners<D> for ValueNoise {
+    #[inline]
+    fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = wrap.corners(cell, [0; D]);
+        chain::corners(Order::XFirst, 0, lower, upper, |h, c| {
+            Wrap::<D>::fold(&self.perm, h, c)
+        })
     }
 }

@@ -11,7 +11,8 @@ use core::panic::PanicInfo;
 
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::hash::{CellHash, CellRng, Poisson};
+use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
 };
@@ -56,6 +57,22 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         let m = Multiband::new(&TILE3_I16, 5, b, black_box(Distribution::Uniform));
         add(m.sample([p[0], p[1], p[2]]));
         add(m.sample_projected([p[0], p[1], p[2]], [p[1], p[0], p[3]]));
+    }
+    // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
+    let period = black_box([7u32, 65536, 1]);
+    if let Ok(n) = Periodic::new(Perlin::new(6), period) {
+        add(n.sample([p[0], p[1], p[2]]));
+        add(n.sample_with_gradient([p[0], p[1], p[2]]).1[0]);
+    }
+    if let Ok(n) = Periodic::new(ValueNoise::new(6), [period[0], period[1]]) {
+        add(n.sample([p[3], p[2]]));
+    }
+    let hash = CellHash::new(black_box(9));
+    let mut rng = CellRng::new(&hash, black_box([1, -5, 3]));
+    add(rng.uniform::<R>());
+    add(rng.signed_uniform::<R>());
+    if let Ok(poisson) = Poisson::new(black_box(2.5)) {
+        add(R::from_i32(rng.poisson(&poisson) as i32));
     }
     // The public helpers: every shift, any normal, any erf argument.
     add(R::from_ratio(black_box(-7), black_box(u32::MAX)));

@@ -1,0 +1,79 @@
+//! A well-mixed 32-bit hash of integer cells, for the noises that need more than the 8 bits of
+//! a permutation per cell: feature points (Worley 1996), impulse positions and weights (Lewis
+//! 1989, Gabor noise), random offsets.
+//!
+//! Each axis is folded into the hash with one round of Wellons' `lowbias32` integer mixer
+//! (<https://nullprogram.com/blog/2018/07/31/>, two multiply–xorshift rounds, bias 0.17 of his
+//! measure), starting from a mix of the seed: `h = mix(…mix(mix(s ^ x) ^ y)…)`. Integer
+//! operations only, so the hash is the same on every target.
+
+use super::chain::{self, ChainHash, Order};
+
+/// Wellons' `lowbias32`: a bijection of `u32` in which each input bit flips each output bit
+/// with probability close to ½.
+#[inline]
+#[must_use]
+pub(crate) const fn mix(mut x: u32) -> u32 {
+    x ^= x >> 16;
+    x = x.wrapping_mul(0x7FEB_352D);
+    x ^= x >> 15;
+    x = x.wrapping_mul(0x846C_A68B);
+    x ^= x >> 16;
+    x
+}
+
+/// A well-mixed 32-bit hash of an integer cell and a seed.
+///
+/// Tested in `tests/tests/hash.rs`: over 10⁶ random cells each input bit (of the cell and of
+/// the seed) flips each output bit with probability within 0.5 ± 0.02 (strict avalanche), and
+/// the hashes of neighbouring cells are uncorrelated.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::hash::CellHash;
+///
+/// let h = CellHash::new(7);
+/// assert_ne!(h.hash([0, 0]), h.hash([1, 0]));
+/// assert_ne!(h.hash([0, 0]), CellHash::new(8).hash([0, 0]));
+/// // Every target computes the same bits.
+/// assert_eq!(CellHash::new(0).hash([1, 2, 3]), CellHash::new(0).hash([1, 2, 3]));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct CellHash {
+    start: u32,
+}
+
+impl CellHash {
+    /// The hash for `seed`.
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        // Mixing the seed (and a constant) first keeps seeds 0, 1, 2, … from giving related
+        // first steps.
+        Self {
+            start: mix(seed ^ 0x9E37_79B9),
+        }
+    }
+
+    /// The hash of `cell` (1 to 4 or more dimensions).
+    #[inline]
+    #[must_use]
+    pub fn hash<const D: usize>(&self, cell: [i32; D]) -> u32 {
+        chain::cell(Order::XFirst, self.start, cell.map(|c| c as u32), |h, c| {
+            self.step(h, c)
+        })
+    }
+}
+
+impl ChainHash for CellHash {
+    /// Coordinates are used whole: the period is 2³² (`u32::MAX` stands for it).
+    const PERIOD: u32 = u32::MAX;
+    #[inline]
+    fn reduce(c: i32) -> u32 {
+        c as u32
+    }
+    #[inline]
+    fn step(&self, h: u32, c: u32) -> u32 {
+        mix(h ^ c)
+    }
+}
