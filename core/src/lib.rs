@@ -10,8 +10,10 @@
 //!
 //! * [`Real`]: the sealed numeric trait (`f32`, `f64`, [`I16F16`]).
 //! * [`Noise`], [`NoiseGradient`]: the sampling traits every noise implements.
-//! * [`hash`]: Olano's Blum-Blum-Shub hash and Perlin's permutation.
-//! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D.
+//! * [`hash`]: Olano's Blum-Blum-Shub hash, Perlin's permutation, a well-mixed cell hash and a
+//!   cell's own random numbers.
+//! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D,
+//!   and any of them periodic ([`Periodic`](lattice::Periodic)).
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
 //!
@@ -74,6 +76,6 @@ pub use real::{I16F16, Real};
 pub mod prelude {
     pub use crate::batch::Grid;
     pub use crate::fractal::{Fractal, Kind, Octaves};
-    pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
+    pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
     pub use crate::{I16F16, Noise, NoiseGradient, Real};
 }

@@ -106,6 +106,11 @@ fn run(o: &Options) -> Result<(), String> {
         "perlin-ridged-2d",
         &Fractal::ridged(Perlin::new(s), octaves),
     )?;
+    // A tile of 4 × 4 cells, and its fBm (lacunarity 2 keeps the period): the image repeats.
+    let tile = Periodic::new(Perlin::new(s), [4, 4]).map_err(|e| e.to_string())?;
+    render::<f32, _>(o, "perlin-periodic-2d", &tile)?;
+    let doubling = Octaves::new(6, 2.0, 0.5).map_err(|e| e.to_string())?;
+    render::<f32, _>(o, "perlin-periodic-fbm-2d", &Fractal::fbm(&tile, doubling))?;
     Ok(())
 }
 

@@ -9,6 +9,8 @@
 //! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
 //! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
 //!
+//! [`Periodic`] wraps any of them to integer periods per axis.
+//!
 //! Every type implements [`Noise`](crate::Noise) for 1 to 4 dimensions and every
 //! [`Real`]; the gradient noises also implement
 //! [`NoiseGradient`](crate::NoiseGradient).
