@@ -10,7 +10,7 @@ pub const LEDS: usize = 60;
 
 /// The fire: fBm of Olano's mNoise, 4 octaves.
 pub struct Fire {
-    noise: Fractal<MNoise<61>, I16F16>,
+    noise: Fractal<MNoise<61>>,
 }
 
 impl Default for Fire {

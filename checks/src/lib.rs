@@ -95,15 +95,15 @@ fn all<R: Bits>(out: &mut [u32]) {
     dims!(OriginalPerlin::new(1));
     dims!(ValueNoise::new(1));
     dims!(CNoise::new(1));
-    dims!(MNoise::<61>::new(1));
-    dims!(MNoise::<4093>::new(1));
-    let octaves = Octaves::<R>::default();
+    dims!(MNoise::<61>::seeded(1));
+    dims!(MNoise::<4093>::seeded(1));
+    let octaves = Octaves::default();
     push(checksum::<R, 3>(
         &Fractal::fbm(Perlin::new(2), octaves),
         100,
     ));
     push(checksum::<R, 3>(
-        &Fractal::turbulence(MNoise::<61>::new(2), octaves),
+        &Fractal::turbulence(MNoise::<61>::seeded(2), octaves),
         100,
     ));
     push(checksum::<R, 2>(&Wavelet::new(&TILE2_I16, 3), 200));

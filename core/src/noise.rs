@@ -132,6 +132,13 @@ impl<R: Real, const D: usize, N: Noise<R, D> + ?Sized> Noise<R, D> for &N {
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         (**self).sample_lanes(p, out);
     }
+    // Forwarded, so a call through a reference reaches the noise's own grid kernel.
+    fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
+        (**self).fill_grid(grid, out)
+    }
+    fn fill_points(&self, points: [&[R]; D], out: &mut [R]) -> Result<(), Error> {
+        (**self).fill_points(points, out)
+    }
 }
 
 impl<R: Real, const D: usize, N: NoiseGradient<R, D> + ?Sized> NoiseGradient<R, D> for &N {

@@ -37,6 +37,9 @@ pub(crate) mod sealed {
         fn mul_unit(self, unit: Self) -> Self;
         /// `self`, or 0 when it is NaN or ±∞ (fixed point: always `self`).
         fn finite_or_zero(self) -> Self;
+        /// A setting given as `f32` and rounded once to I16F16 when it was validated: floats
+        /// take the `f32` (exactly), fixed point its rounding, so no sample converts a float.
+        fn from_setting(f: f32, q: I16F16) -> Self;
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -70,6 +73,10 @@ pub(crate) mod sealed {
                     // ∞ − ∞ and NaN − NaN are NaN, which compares unequal to 0.
                     if self - self == 0.0 { self } else { 0.0 }
                 }
+                #[inline]
+                fn from_setting(f: f32, _: I16F16) -> Self {
+                    f as $t
+                }
             }
         };
     }
@@ -85,6 +92,10 @@ pub(crate) mod sealed {
         #[inline]
         fn finite_or_zero(self) -> Self {
             self
+        }
+        #[inline]
+        fn from_setting(_: f32, q: I16F16) -> Self {
+            q
         }
     }
 }

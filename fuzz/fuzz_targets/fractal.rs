@@ -32,7 +32,7 @@ fuzz_target!(|input: Input| {
         input.dpdx.map(|b| I16F16::from_bits(b as i32)),
         input.dpdy.map(|b| I16F16::from_bits(b as i32)),
     );
-    let Ok(octaves) = Octaves::<f32>::new(input.count, input.lacunarity, input.gain) else {
+    let Ok(octaves) = Octaves::new(input.count, input.lacunarity, input.gain) else {
         let (l, g) = (input.lacunarity, input.gain);
         assert!(
             input.count == 0
@@ -43,7 +43,7 @@ fuzz_target!(|input: Input| {
         return;
     };
     let fixed =
-        Octaves::<I16F16>::new(input.count, input.lacunarity, input.gain).expect("same checks");
+        Octaves::new(input.count, input.lacunarity, input.gain).expect("same checks");
     let f = Fractal::new(Perlin::new(1), octaves, kind);
     let bound = Noise::<f32, 3>::amplitude_bound(&f);
     let filtered = f.sample_filtered(p, dx, dy);

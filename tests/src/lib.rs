@@ -93,7 +93,7 @@ impl Lattice {
             ("value", Lattice::Value(ValueNoise::new(seed))),
             ("cnoise", Lattice::C(CNoise::new(seed))),
             ("mnoise61", Lattice::M61(MNoise::new(seed))),
-            ("mnoise4093", Lattice::M4093(MNoise::new(seed))),
+            ("mnoise4093", Lattice::M4093(MNoise::seeded(seed))),
         ]
     }
 

@@ -155,10 +155,10 @@ fn multiband_samples_the_origin_for_nan_and_infinite_coordinates() {
         u.sample_projected([0.0, 0.5, 0.5], n).to_bits()
     );
     // Through a fractal sum too.
-    let f = Fractal::fbm(m, Octaves::<f32>::default());
+    let f = Fractal::fbm(m, Octaves::default());
     assert_eq!(
         f.sample([f32::INFINITY, 1.5]).to_bits(),
-        f.sample([0.0, 1.5]).to_bits()
+        f.sample([0.0f32, 1.5]).to_bits()
     );
 }
 
@@ -183,7 +183,7 @@ fn large_normals_keep_their_direction() {
 
 #[test]
 fn filtered_sums_are_symmetric_in_their_footprints() {
-    let f = Fractal::fbm(Perlin::new(0), Octaves::<f32>::default());
+    let f = Fractal::fbm(Perlin::new(0), Octaves::default());
     let p = [0.3f32, 0.7, 0.1];
     let (nan, quarter) = ([f32::NAN, 0.0, 0.0], [0.25f32, 0.0, 0.0]);
     let a = f.sample_filtered(p, nan, quarter);
@@ -243,7 +243,7 @@ impl<const D: usize> TileData<D> for Flat {
 #[test]
 fn fixed_point_saturates_with_users_noises_and_tiles() {
     // Ridge terms are squares: (1 − 200)² = 39601 saturates, never wraps negative.
-    let octaves = Octaves::<I16F16>::default();
+    let octaves = Octaves::default();
     let ridged = Fractal::ridged(Constant(200.0), octaves);
     let v: I16F16 = ridged.sample([I16F16::ONE, I16F16::ONE]);
     assert_eq!(v, I16F16::MAX);

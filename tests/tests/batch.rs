@@ -176,7 +176,7 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
     }
     let multi = Multiband::new(&TILE3, 1, Bands::default(), Distribution::Uniform);
     check_all_types::<3, _>("multiband", &multi, &mut rng);
-    let fbm = Fractal::fbm(Wavelet::new(&TILE2, 4), Octaves::<f32>::default());
+    let fbm = Fractal::fbm(Wavelet::new(&TILE2, 4), Octaves::default());
     check::<f32, 2, _>("fractal wavelet", &fbm, &mut rng);
 }
 
@@ -230,4 +230,39 @@ fn reduce_lanes_equals_reduce_over_the_fast_range() {
     exhaustive::<61>();
     exhaustive::<4093>();
     exhaustive::<2>();
+}
+
+/// A noise whose own batch methods write a marker, to see which implementation a call reaches.
+struct Marked;
+
+impl Noise<f32, 2> for Marked {
+    fn sample(&self, _: [f32; 2]) -> f32 {
+        0.0
+    }
+    fn amplitude_bound(&self) -> f32 {
+        42.0
+    }
+    fn fill_grid(&self, _: &Grid<f32, 2>, out: &mut [f32]) -> Result<(), Error> {
+        out.fill(42.0);
+        Ok(())
+    }
+    fn fill_points(&self, _: [&[f32]; 2], out: &mut [f32]) -> Result<(), Error> {
+        out.fill(-42.0);
+        Ok(())
+    }
+}
+
+/// Through a reference (as in `Fractal::fbm(&perlin, …)` or generic code taking `&N`), the
+/// batch methods reach the noise's own kernels, not the trait's lane-by-lane defaults.
+#[test]
+fn references_forward_the_batch_kernels() {
+    let by_ref = &&Marked;
+    let grid = Grid::new([0.0f32; 2], [0.1; 2], [5, 3]);
+    let mut out = [0.0f32; 15];
+    by_ref.fill_grid(&grid, &mut out).unwrap();
+    assert!(out.iter().all(|&v| v == 42.0));
+    by_ref
+        .fill_points([&[0.0; 15], &[0.0; 15]], &mut out)
+        .unwrap();
+    assert!(out.iter().all(|&v| v == -42.0));
 }

@@ -150,7 +150,7 @@ fn sweep_gradient<R: Special, const D: usize, N: Noise<R, D>>(
 /// `Fractal::sample_filtered` with bad points and bad footprints.
 fn sweep_filtered<R: Special, const D: usize, N: Noise<R, D>>(
     name: &str,
-    f: &Fractal<N, R>,
+    f: &Fractal<N>,
     rng: &mut Rng,
 ) {
     let bound = f.amplitude_bound();
@@ -304,7 +304,7 @@ fn every_noise<R: Special>(rng: &mut Rng) {
 
     // Fractal sums of every kind, plain and filtered.
     for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
-        let f = Fractal::new(Perlin::new(3), Octaves::<R>::default(), kind);
+        let f = Fractal::new(Perlin::new(3), Octaves::default(), kind);
         let name = &format!("{kind:?} of perlin");
         sweep_noise::<R, 1, _>(name, &f, rng);
         sweep_noise::<R, 2, _>(name, &f, rng);
@@ -349,7 +349,7 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         }
         // A fractal sum over multiband noise.
         let m = Multiband::new(&TILE2, 8, Bands::default(), distribution);
-        let f = Fractal::fbm(m, Octaves::<R>::new(3, 2.0, 0.5).expect("valid"));
+        let f = Fractal::fbm(m, Octaves::new(3, 2.0, 0.5).expect("valid"));
         let name = &format!("fbm of multiband {distribution:?}");
         sweep_noise::<R, 2, _>(name, &f, rng);
         sweep_filtered::<R, 2, _>(name, &f, rng);

@@ -11,7 +11,7 @@ fn perlin_at(p: [f32; 3], freq: f32) -> f32 {
 
 #[test]
 fn fbm_turbulence_and_ridged_are_the_written_out_sums() {
-    let octaves = Octaves::<f32>::new(5, 1.99, 0.5).unwrap();
+    let octaves = Octaves::new(5, 1.99, 0.5).unwrap();
     let mut rng = Rng::from_env(9);
     for _ in 0..10_000 {
         let p: [f32; 3] = core::array::from_fn(|_| rng.f64_in(-20.0, 20.0) as f32);
@@ -41,7 +41,7 @@ fn footprint_for(n: f32) -> [f32; 3] {
 
 #[test]
 fn footprint_clamps_octaves_as_pbrt_does() {
-    let octaves = Octaves::<f32>::new(6, 1.99, 0.5).unwrap();
+    let octaves = Octaves::new(6, 1.99, 0.5).unwrap();
     let fbm = Fractal::fbm(Perlin::new(0), octaves);
     let turb = Fractal::turbulence(Perlin::new(0), octaves);
     let p = [0.3f32, 1.7, -2.2];
@@ -75,10 +75,7 @@ fn footprint_clamps_octaves_as_pbrt_does() {
         fbm.sample(p)
     );
     // Fixed point takes the same octave decisions.
-    let fx = Fractal::fbm(
-        Perlin::new(0),
-        Octaves::<I16F16>::new(6, 1.99, 0.5).unwrap(),
-    );
+    let fx = Fractal::fbm(Perlin::new(0), Octaves::new(6, 1.99, 0.5).unwrap());
     let pf = p.map(I16F16::from_num);
     let v = fx.sample_filtered(
         pf,
@@ -97,16 +94,8 @@ fn sums_stay_within_their_bound_for_every_accepted_setting() {
             let lacunarity = rng.f64_in(0.01, 16.0) as f32;
             let gain = rng.f64_in(-1.0, 1.0) as f32;
             for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
-                let f = Fractal::new(
-                    &noise,
-                    Octaves::<f32>::new(count, lacunarity, gain).unwrap(),
-                    kind,
-                );
-                let g = Fractal::new(
-                    &noise,
-                    Octaves::<I16F16>::new(count, lacunarity, gain).unwrap(),
-                    kind,
-                );
+                let f = Fractal::new(&noise, Octaves::new(count, lacunarity, gain).unwrap(), kind);
+                let g = Fractal::new(&noise, Octaves::new(count, lacunarity, gain).unwrap(), kind);
                 let bound = Noise::<f32, 3>::amplitude_bound(&f);
                 for _ in 0..50 {
                     let p: [f32; 3] = core::array::from_fn(|_| rng.f64_in(-3e4, 3e4) as f32);
@@ -133,10 +122,7 @@ fn sums_stay_within_their_bound_for_every_accepted_setting() {
 
 #[test]
 fn fixed_point_fractals_never_overflow() {
-    let f = Fractal::fbm(
-        MNoise::<61>::new(0),
-        Octaves::<I16F16>::new(30, 16.0, 1.0).unwrap(),
-    );
+    let f = Fractal::fbm(MNoise::<61>::new(0), Octaves::new(30, 16.0, 1.0).unwrap());
     for x in [I16F16::MIN, I16F16::MAX, I16F16::ZERO, I16F16::DELTA] {
         let _ = f.sample([x, x, x]);
         let _ = f.sample_filtered([x, x], [I16F16::MAX; 2], [I16F16::MIN; 2]);
@@ -146,32 +132,29 @@ fn fixed_point_fractals_never_overflow() {
 #[test]
 fn bad_settings_are_refused_with_a_clear_error() {
     assert_eq!(
-        Octaves::<f32>::new(0, 2.0, 0.5),
+        Octaves::new(0, 2.0, 0.5),
         Err(Error::OctaveCount { count: 0, max: 30 })
     );
     assert_eq!(
-        Octaves::<f32>::new(31, 2.0, 0.5),
+        Octaves::new(31, 2.0, 0.5),
         Err(Error::OctaveCount { count: 31, max: 30 })
     );
     for bad in [0.0, -1.0, 16.5, f32::INFINITY] {
-        assert_eq!(
-            Octaves::<f32>::new(4, bad, 0.5),
-            Err(Error::Lacunarity(bad))
-        );
+        assert_eq!(Octaves::new(4, bad, 0.5), Err(Error::Lacunarity(bad)));
     }
     assert!(matches!(
-        Octaves::<f32>::new(4, f32::NAN, 0.5),
+        Octaves::new(4, f32::NAN, 0.5),
         Err(Error::Lacunarity(_))
     ));
     for bad in [1.5, -1.5, f32::NEG_INFINITY] {
-        assert_eq!(Octaves::<f32>::new(4, 2.0, bad), Err(Error::Gain(bad)));
+        assert_eq!(Octaves::new(4, 2.0, bad), Err(Error::Gain(bad)));
     }
-    let e = Fractal::turbulence(Perlin::new(0), Octaves::<f32>::default()).with_clamped_mean(-1.0);
+    let e = Fractal::turbulence(Perlin::new(0), Octaves::default()).with_clamped_mean(-1.0);
     assert_eq!(e.unwrap_err(), Error::ClampedMean(-1.0));
     assert_eq!(
         Error::Gain(2.0).to_string(),
         "gain 2 must be finite and in [-1, 1]"
     );
-    let d = Octaves::<f32>::default();
+    let d = Octaves::default();
     assert_eq!((d.count(), d.lacunarity(), d.gain()), (6, 1.99, 0.5));
 }

@@ -130,11 +130,16 @@ fn every_lattice_noise_repeats_with_any_period() {
         &mut rng
     );
     every_type_and_dim!(gradient_noise, "cnoise", &CNoise::new(4), &mut rng);
-    every_type_and_dim!(gradient_noise, "mnoise61", MNoise::<61>::new(4), &mut rng);
+    every_type_and_dim!(
+        gradient_noise,
+        "mnoise61",
+        MNoise::<61>::seeded(4),
+        &mut rng
+    );
     every_type_and_dim!(
         gradient_noise,
         "mnoise4093",
-        MNoise::<4093>::new(4),
+        MNoise::<4093>::seeded(4),
         &mut rng
     );
     every_type_and_dim!(value_noise, "value", (), &mut rng);
@@ -157,7 +162,7 @@ where
 fn the_natural_period_is_the_plain_noise() {
     let mut rng = Rng::from_env(161);
     let perlin = Perlin::new(9);
-    let m = MNoise::<61>::new(9);
+    let m = MNoise::<61>::seeded(9);
     for _ in 0..20_000 {
         let p: [f32; 3] = core::array::from_fn(|_| rng.f64_in(-600.0, 600.0) as f32);
         let same = |a: f32, b: f32| assert_eq!(a.to_bits(), b.to_bits(), "{p:?}");
@@ -197,8 +202,8 @@ fn long_periods_do_not_repeat_early() {
     let p = Periodic::new(&perlin, [1000, 1000]).unwrap();
     let c = Periodic::new(CNoise::new(2), [1000, 1000]).unwrap();
     let v = Periodic::new(ValueNoise::new(2), [1000, 1000]).unwrap();
-    let m = Periodic::new(MNoise::<4093>::new(2), [65536, 65536]).unwrap();
-    let m61 = Periodic::new(MNoise::<61>::new(2), [1000, 1000]).unwrap();
+    let m = Periodic::new(MNoise::<4093>::seeded(2), [65536, 65536]).unwrap();
+    let m61 = Periodic::new(MNoise::<61>::seeded(2), [1000, 1000]).unwrap();
     let cases: [(&str, &Field<'_>, f64); 5] = [
         ("perlin, period 1000", &|q| p.sample(q), 256.0),
         ("cnoise, period 1000", &|q| c.sample(q), 256.0),
@@ -231,8 +236,8 @@ fn long_periods_do_not_repeat_early() {
 fn fractal_sums_with_integer_lacunarity_keep_the_period() {
     let mut rng = Rng::from_env(162);
     let tile = Periodic::new(Perlin::new(5), [8, 4]).unwrap();
-    let fbm = Fractal::fbm(&tile, Octaves::<I16F16>::new(5, 2.0, 0.5).unwrap());
-    let pbrt = Fractal::fbm(&tile, Octaves::<I16F16>::default());
+    let fbm = Fractal::fbm(&tile, Octaves::new(5, 2.0, 0.5).unwrap());
+    let pbrt = Fractal::fbm(&tile, Octaves::default());
     let mut pbrt_differs = 0;
     for _ in 0..1000 {
         let p: [I16F16; 2] = rng.exact_point(100);
@@ -279,7 +284,7 @@ fn the_wrap_is_seamless() {
                     .sample_with_gradient(p)
             }),
             ("mnoise61", &|p| {
-                Periodic::new(MNoise::<61>::new(6), [period, 7])
+                Periodic::new(MNoise::<61>::seeded(6), [period, 7])
                     .unwrap()
                     .sample_with_gradient(p)
             }),

@@ -177,7 +177,7 @@ impl Params {
         }
         let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
         // The core checks the ranges and says why.
-        Octaves::<f32>::new(octaves as u32, lacunarity, gain).map_err(describe)?;
+        Octaves::new(octaves as u32, lacunarity, gain).map_err(describe)?;
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if kind == NoiseKind::Wavelet && band_weights.iter().all(|w| *w == 0.0) {
             return Err("every band weight is zero: raise at least one band".into());

@@ -54,7 +54,7 @@ fn fill_lattice<R: Real, N: Noise<R, 3>>(noise: N, p: &Params, size: usize, valu
         None => fill(&noise, p, size, values),
         Some(kind) => {
             // Checked when the Params were built.
-            let octaves = Octaves::<R>::new(p.octaves, p.lacunarity, p.gain).unwrap_or_default();
+            let octaves = Octaves::new(p.octaves, p.lacunarity, p.gain).unwrap_or_default();
             fill(&Fractal::new(noise, octaves, kind), p, size, values)
         }
     }

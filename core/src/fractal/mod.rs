@@ -9,21 +9,51 @@
 mod footprint;
 
 use crate::batch::LANES;
-use crate::{Error, Noise, Real};
+use crate::{Error, I16F16, Noise, Real};
 use footprint::{footprint_len2, octaves_for};
+
+/// A validated setting: its `f32` value, and that value rounded once to I16F16.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Setting {
+    f: f32,
+    q: I16F16,
+}
+
+impl Setting {
+    fn new(f: f32) -> Self {
+        Self {
+            f,
+            q: I16F16::from_f32(f),
+        }
+    }
+
+    /// The larger magnitude of the setting and its rounding.
+    fn largest(self) -> f32 {
+        self.f.abs().max(self.q.to_f32().abs())
+    }
+
+    /// The setting in the number type `R`.
+    #[inline]
+    fn get<R: Real>(self) -> R {
+        R::from_setting(self.f, self.q)
+    }
+}
 
 /// The octave settings shared by every fractal sum.
 ///
 /// Defaults: 6 octaves, lacunarity 1.99 and gain 0.5 (pbrt's; a lacunarity just under 2 keeps
 /// the zeros of successive octaves from lining up on the lattice).
+///
+/// Settings are numbers, not of a number type: a sum samples in `f32`, `f64` or I16F16 as its
+/// noise does, with the settings exact in floats and rounded to 2⁻¹⁶ in fixed point.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Octaves<R> {
+pub struct Octaves {
     count: u32,
-    lacunarity: R,
-    gain: R,
+    lacunarity: Setting,
+    gain: Setting,
 }
 
-impl<R: Real> Octaves<R> {
+impl Octaves {
     /// The most octaves a sum may have (beyond ~24 octaves f32 frequencies pass 2²⁴ and every
     /// sample lands on a lattice point anyway).
     pub const MAX: u32 = 30;
@@ -41,10 +71,10 @@ impl<R: Real> Octaves<R> {
     /// ```
     /// use bandnoise::{Error, fractal::Octaves};
     ///
-    /// let o = Octaves::<f32>::new(8, 2.0, 0.5).unwrap();
+    /// let o = Octaves::new(8, 2.0, 0.5).unwrap();
     /// assert_eq!(o.count(), 8);
-    /// assert_eq!(Octaves::<f32>::new(0, 2.0, 0.5), Err(Error::OctaveCount { count: 0, max: 30 }));
-    /// assert!(Octaves::<f32>::new(4, f32::NAN, 0.5).is_err());
+    /// assert_eq!(Octaves::new(0, 2.0, 0.5), Err(Error::OctaveCount { count: 0, max: 30 }));
+    /// assert!(Octaves::new(4, f32::NAN, 0.5).is_err());
     /// ```
     pub fn new(count: u32, lacunarity: f32, gain: f32) -> Result<Self, Error> {
         if count == 0 || count > Self::MAX {
@@ -61,8 +91,8 @@ impl<R: Real> Octaves<R> {
         }
         Ok(Self {
             count,
-            lacunarity: R::from_f32(lacunarity),
-            gain: R::from_f32(gain),
+            lacunarity: Setting::new(lacunarity),
+            gain: Setting::new(gain),
         })
     }
 
@@ -74,23 +104,23 @@ impl<R: Real> Octaves<R> {
 
     /// The frequency ratio between octaves.
     #[must_use]
-    pub fn lacunarity(&self) -> R {
-        self.lacunarity
+    pub fn lacunarity(&self) -> f32 {
+        self.lacunarity.f
     }
 
     /// The amplitude ratio between octaves.
     #[must_use]
-    pub fn gain(&self) -> R {
-        self.gain
+    pub fn gain(&self) -> f32 {
+        self.gain.f
     }
 }
 
-impl<R: Real> Default for Octaves<R> {
+impl Default for Octaves {
     fn default() -> Self {
         Self {
             count: 6,
-            lacunarity: R::from_f32(1.99),
-            gain: R::from_ratio(1, 1),
+            lacunarity: Setting::new(1.99),
+            gain: Setting::new(0.5),
         }
     }
 }
@@ -129,36 +159,36 @@ pub enum Kind {
 /// assert_eq!(far, three.sample([0.3, 0.7, 0.1]));
 /// ```
 #[derive(Clone, Debug, PartialEq)]
-pub struct Fractal<N, R> {
+pub struct Fractal<N> {
     noise: N,
-    octaves: Octaves<R>,
+    octaves: Octaves,
     kind: Kind,
-    clamped_mean: R,
+    clamped_mean: Setting,
 }
 
-impl<N, R: Real> Fractal<N, R> {
+impl<N> Fractal<N> {
     /// A fractal sum of `kind`.
-    pub fn new(noise: N, octaves: Octaves<R>, kind: Kind) -> Self {
+    pub fn new(noise: N, octaves: Octaves, kind: Kind) -> Self {
         Self {
             noise,
             octaves,
             kind,
-            clamped_mean: R::from_f32(0.2),
+            clamped_mean: Setting::new(0.2),
         }
     }
 
     /// Fractional Brownian motion.
-    pub fn fbm(noise: N, octaves: Octaves<R>) -> Self {
+    pub fn fbm(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Fbm)
     }
 
     /// Turbulence.
-    pub fn turbulence(noise: N, octaves: Octaves<R>) -> Self {
+    pub fn turbulence(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Turbulence)
     }
 
     /// Ridged multifractal.
-    pub fn ridged(noise: N, octaves: Octaves<R>) -> Self {
+    pub fn ridged(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Ridged)
     }
 
@@ -173,12 +203,12 @@ impl<N, R: Real> Fractal<N, R> {
         if !(0.0..=4.0).contains(&mean) {
             return Err(Error::ClampedMean(mean));
         }
-        self.clamped_mean = R::from_f32(mean);
+        self.clamped_mean = Setting::new(mean);
         Ok(self)
     }
 
     /// The octave settings.
-    pub fn octaves(&self) -> &Octaves<R> {
+    pub fn octaves(&self) -> &Octaves {
         &self.octaves
     }
 
@@ -194,7 +224,7 @@ impl<N, R: Real> Fractal<N, R> {
 
     /// Sums `full` octaves, then octave `full` with weight `partial` (if `full < count`), then
     /// adds the clamped-octave mean for the octaves after it (turbulence only; `add_clamped`).
-    fn sum<const D: usize>(&self, p: [R; D], full: u32, partial: R, add_clamped: bool) -> R
+    fn sum<R: Real, const D: usize>(&self, p: [R; D], full: u32, partial: R, add_clamped: bool) -> R
     where
         N: Noise<R, D>,
     {
@@ -209,7 +239,7 @@ impl<N, R: Real> Fractal<N, R> {
     /// the noise at `L` points. The point path is this with `L = 1`, so the batch path is
     /// bit-identical to it by construction. Each step runs over all lanes, with the branch on
     /// the kind outside the lane loops.
-    fn sum_lanes<const L: usize, const D: usize>(
+    fn sum_lanes<R: Real, const L: usize, const D: usize>(
         &self,
         p: &[[R; L]; D],
         full: u32,
@@ -217,6 +247,9 @@ impl<N, R: Real> Fractal<N, R> {
         add_clamped: bool,
         mut eval: impl FnMut(&[[R; L]; D], &mut [R; L]),
     ) -> [R; L] {
+        let lacunarity: R = self.octaves.lacunarity.get();
+        let gain: R = self.octaves.gain.get();
+        let clamped_mean: R = self.clamped_mean.get();
         let mut sum = [R::ZERO; L];
         let mut frequency = R::ONE;
         let mut amplitude = R::ONE;
@@ -249,7 +282,7 @@ impl<N, R: Real> Fractal<N, R> {
                 term = match self.kind {
                     // pbrt: Lerp(smoothstep, 0.2, |n|) = 0.2 + w·(|n| − 0.2).
                     Kind::Turbulence if add_clamped => {
-                        term.map(|t| self.clamped_mean + partial * (t - self.clamped_mean))
+                        term.map(|t| clamped_mean + partial * (t - clamped_mean))
                     }
                     _ => term.map(|t| partial * t),
                 };
@@ -257,14 +290,14 @@ impl<N, R: Real> Fractal<N, R> {
             for (s, t) in sum.iter_mut().zip(term) {
                 *s = s.saturating_add(amplitude.saturating_mul(t));
             }
-            frequency = frequency.saturating_mul(self.octaves.lacunarity);
-            amplitude = amplitude.saturating_mul(self.octaves.gain);
+            frequency = frequency.saturating_mul(lacunarity);
+            amplitude = amplitude.saturating_mul(gain);
         }
         if add_clamped && self.kind == Kind::Turbulence {
             for _ in last..self.octaves.count {
-                let mean = amplitude.saturating_mul(self.clamped_mean);
+                let mean = amplitude.saturating_mul(clamped_mean);
                 sum = sum.map(|s| s.saturating_add(mean));
-                amplitude = amplitude.saturating_mul(self.octaves.gain);
+                amplitude = amplitude.saturating_mul(gain);
             }
         }
         sum.map(R::canonical)
@@ -292,7 +325,12 @@ impl<N, R: Real> Fractal<N, R> {
     /// octave frequencies wrap and sums saturate in fixed point); the result is finite in floats
     /// and within [`amplitude_bound`](Noise::amplitude_bound).
     #[must_use]
-    pub fn sample_filtered<const D: usize>(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R
+    pub fn sample_filtered<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        dpdx: [R; D],
+        dpdy: [R; D],
+    ) -> R
     where
         N: Noise<R, D>,
     {
@@ -301,7 +339,7 @@ impl<N, R: Real> Fractal<N, R> {
     }
 }
 
-impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N, R> {
+impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         self.sum(p, self.octaves.count, R::ZERO, false)
@@ -326,8 +364,9 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N, R> {
             Kind::Ridged => 1.0,
             _ => 0.0,
         })
-        .max(self.clamped_mean.to_f32());
-        let g = self.octaves.gain.to_f32().abs();
+        .max(self.clamped_mean.largest());
+        // The larger of the gain and its fixed-point rounding, so the bound holds in every type.
+        let g = self.octaves.gain.largest();
         let mut total = 0.0;
         let mut a = 1.0;
         for _ in 0..self.octaves.count {

@@ -77,10 +77,30 @@ pub struct MNoise<const M: u32 = 61> {
     inner: [u32; 4],
 }
 
-impl<const M: u32> MNoise<M> {
-    /// mNoise with modulus `M` for `seed` (0: Olano's noise).
+impl MNoise {
+    /// Olano's mNoise, with his modulus `M = 61`, for `seed` (0: his noise). For another
+    /// modulus, [`MNoise::<M>::seeded`](MNoise::seeded).
+    ///
+    /// ```
+    /// use bandnoise::{Noise, lattice::MNoise};
+    ///
+    /// let m = MNoise::new(7);
+    /// assert_eq!(m, MNoise::<61>::seeded(7));
+    /// let v: f32 = m.sample([0.5, 0.25]);
+    /// # let _ = v;
+    /// ```
     #[must_use]
     pub const fn new(seed: u32) -> Self {
+        Self::seeded(seed)
+    }
+}
+
+impl<const M: u32> MNoise<M> {
+    /// mNoise with modulus `M` for `seed` (0: Olano's noise): `MNoise::<4093>::seeded(7)`.
+    /// (`new` is the common case, `M = 61`: a default type parameter does not apply where the
+    /// type is inferred, so `MNoise::new` is defined for 61 only.)
+    #[must_use]
+    pub const fn seeded(seed: u32) -> Self {
         let (offset, flip) = if seed == 0 {
             ([0; 4], 0)
         } else {
@@ -115,7 +135,7 @@ impl<const M: u32> MNoise<M> {
 
 impl<const M: u32> Default for MNoise<M> {
     fn default() -> Self {
-        Self::new(0)
+        Self::seeded(0)
     }
 }
 

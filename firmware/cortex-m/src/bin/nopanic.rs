@@ -44,7 +44,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(Perlin::new(2).sample_with_gradient([p[0], p[1], p[2]]).0);
     add(MNoise::<61>::new(2).sample_with_gradient([p[0], p[1]]).1[1]);
     let kind = black_box(Kind::Ridged);
-    if let Ok(o) = Octaves::<R>::new(black_box(6), black_box(1.99), black_box(0.5)) {
+    if let Ok(o) = Octaves::new(black_box(6), black_box(1.99), black_box(0.5)) {
         let f = Fractal::new(Perlin::new(3), o, kind);
         add(f.sample([p[0], p[1], p[2]]));
         add(f.sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[2]]));
@@ -86,7 +86,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     }
     let xs = black_box([p[0]; 20]);
     let ys = black_box([p[3]; 20]);
-    if let Ok(o) = Octaves::<R>::new(black_box(3), black_box(2.0), black_box(0.5)) {
+    if let Ok(o) = Octaves::new(black_box(3), black_box(2.0), black_box(0.5)) {
         let f = Fractal::new(MNoise::<61>::new(3), o, black_box(Kind::Fbm));
         if f.fill_points([&xs[..], &ys[..]], &mut out[..20]).is_ok() {
             add(out.get(black_box(19)).copied().unwrap_or(R::ZERO));
