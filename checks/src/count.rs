@@ -47,7 +47,7 @@ fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) 
 /// of the firmware, which the trace recognises by name).
 pub fn run(begin: fn(), end: fn()) -> u32 {
     let (m, p) = (MNoise::<61>::new(1), Perlin::new(1));
-    let w = Wavelet::new(&TILE2_I16, 1);
+    let w = Wavelet::new(1, &TILE2_I16);
     let mut acc = workload::<I16F16, 2>(begin, end, |q| q[0] + q[1]);
     acc ^= workload::<I16F16, 2>(begin, end, |q| m.sample(q));
     acc ^= workload::<f32, 2>(begin, end, |q| m.sample(q));

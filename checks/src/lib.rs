@@ -106,10 +106,10 @@ fn all<R: Bits>(out: &mut [u32]) {
         &Fractal::turbulence(MNoise::<61>::seeded(2), octaves),
         100,
     ));
-    push(checksum::<R, 2>(&Wavelet::new(&TILE2_I16, 3), 200));
-    push(checksum::<R, 3>(&Wavelet::new(&TILE3_I16, 3), 200));
+    push(checksum::<R, 2>(&Wavelet::new(3, &TILE2_I16), 200));
+    push(checksum::<R, 3>(&Wavelet::new(3, &TILE3_I16), 200));
     let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
-    let multi = Multiband::new(&TILE3_I16, 3, bands, Distribution::Uniform);
+    let multi = Multiband::new(3, &TILE3_I16, bands, Distribution::Uniform);
     push(checksum::<R, 3>(&multi, 100));
     let mut f = Fnv::new();
     for i in 0..POINTS / 4 {

@@ -15,6 +15,8 @@
 //! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D,
 //!   and any of them periodic ([`Periodic`](lattice::Periodic)).
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
+//! * [`wavelet`]: Cook and DeRose's wavelet noise: band-limited bands over tiles computed at
+//!   compile time, projected onto surfaces, summed into multiband noise.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
 //!
 //! # Example
@@ -37,12 +39,17 @@
 //!
 //! # Seeds
 //!
-//! Every noise takes a `u32` seed in `new`, and every `new` is `const`. How the seed enters:
+//! Every noise takes a `u32` seed, first, in `new` (`MNoise::<M>::seeded` for a modulus other
+//! than Olano's 61). Every `new` is `const` except [`Multiband::new`](wavelet::Multiband::new),
+//! which normalises its band weights at run time. How the seed enters:
 //!
 //! | noise | the seed … | seed 0 |
 //! |---|---|---|
 //! | [`Perlin`](lattice::Perlin), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
 //! | [`MNoise`](lattice::MNoise) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
+//! | [`Wavelet`](wavelet::Wavelet) | picks each tile-sized block's orientation (48 in 3D, 8 in 2D) by a hash of the block and the seed | one orientation hash like any other |
+//! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
+//! | [`CellHash`](hash::CellHash) | is mixed into the start of every cell's hash chain | as any other seed |
 //!
 //! Different seeds give decorrelated noise (tested: |correlation| < 0.05 on a 256² grid).
 //!
@@ -77,5 +84,6 @@ pub mod prelude {
     pub use crate::batch::Grid;
     pub use crate::fractal::{Fractal, Kind, Octaves};
     pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+    pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{I16F16, Noise, NoiseGradient, Real};
 }

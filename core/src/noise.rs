@@ -25,7 +25,7 @@ use crate::{Error, Real};
 /// let perlin = Perlin::new(0);
 /// assert_eq!(perlin.sample([3.14f64, 42.0, 7.0]), 0.13691995878400012); // Perlin's reference
 /// let v: f32 = perlin.sample([0.5, 0.25]);
-/// assert!(v.abs() <= Noise::<f32, 2>::amplitude_bound(&perlin));
+/// assert!(v.abs() <= perlin.amplitude_bound::<2>());
 /// ```
 pub trait Noise<R: Real, const D: usize> {
     /// The noise at `p`.
@@ -147,3 +147,24 @@ impl<R: Real, const D: usize, N: NoiseGradient<R, D> + ?Sized> NoiseGradient<R, 
         (**self).sample_with_gradient(p)
     }
 }
+
+/// Gives a noise type an inherent `amplitude_bound::<D>()`, so that concrete code asks for the
+/// bound in `D` dimensions without naming the trait and a number type (the method-call form of
+/// [`Noise::amplitude_bound`] cannot infer them).
+macro_rules! inherent_amplitude_bound {
+    ($ty:ty, [$($generics:tt)*]) => {
+        impl<$($generics)*> $ty {
+            /// [`Noise::amplitude_bound`](crate::Noise::amplitude_bound) in `D` dimensions:
+            /// `noise.amplitude_bound::<3>()`. This is the `f32` bound; every noise of the crate
+            /// has the same bound in every number type.
+            #[must_use]
+            pub fn amplitude_bound<const D: usize>(&self) -> f32
+            where
+                Self: crate::Noise<f32, D>,
+            {
+                crate::Noise::<f32, D>::amplitude_bound(self)
+            }
+        }
+    };
+}
+pub(crate) use inherent_amplitude_bound;

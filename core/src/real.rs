@@ -141,12 +141,16 @@ pub trait Real:
     const MAX: Self;
 
     /// Converts from `f32`: rounds to nearest, saturates at the type's range, NaN becomes 0.
+    #[must_use]
     fn from_f32(v: f32) -> Self;
     /// Converts to `f32` (rounding to nearest).
+    #[must_use]
     fn to_f32(self) -> f32;
     /// Converts to `f64` (exact for all three types).
+    #[must_use]
     fn to_f64(self) -> f64;
     /// Converts a small integer, saturating at the type's range.
+    #[must_use]
     fn from_i32(i: i32) -> Self;
     /// `num · 2^-shift`, exact whenever the result is representable (used for tables of
     /// gradients and lattice values, so that every number type starts from the same constants).
@@ -164,6 +168,7 @@ pub trait Real:
     /// assert_eq!(I16F16::from_ratio(1, 80), I16F16::ZERO);
     /// assert_eq!(I16F16::from_ratio(1 << 20, 0), I16F16::MAX);
     /// ```
+    #[must_use]
     fn from_ratio(num: i32, shift: u32) -> Self;
 
     /// Splits a coordinate into its lattice cell `floor(x)` and the fraction `x − floor(x)` in
@@ -176,6 +181,7 @@ pub trait Real:
     ///   next cell with fraction 0, the nearest representable point.
     /// * A cell outside `i32` wraps modulo 2³² (two's complement), like integer overflow in a
     ///   hash; such floats are integers anyway, so the fraction is 0.
+    #[must_use]
     fn split(self) -> (i32, Self);
 
     /// [`split`](Self::split) of every lane, bit-identical to it, written so the compiler can
@@ -192,14 +198,18 @@ pub trait Real:
     }
 
     /// Absolute value (saturating at `MAX` for fixed point's most negative value).
+    #[must_use]
     fn abs(self) -> Self;
     /// Addition that saturates at the type's range in fixed point (plain IEEE `+` for floats).
+    #[must_use]
     fn saturating_add(self, o: Self) -> Self;
     /// Multiplication that saturates in fixed point (plain IEEE `×` for floats).
+    #[must_use]
     fn saturating_mul(self, o: Self) -> Self;
     /// Multiplication that wraps modulo the integer range in fixed point (plain IEEE `×` for
     /// floats). Scaling a coordinate by an octave frequency uses it: a wrapped fixed-point
     /// coordinate still lands on a lattice cell, so the result is defined.
+    #[must_use]
     fn wrapping_mul(self, o: Self) -> Self;
     /// Multiplication rounded to nearest (ties up) in fixed point, plain IEEE `×` for floats.
     ///
@@ -207,20 +217,26 @@ pub trait Real:
     /// amplifies; the kernels use this instead wherever a product feeds the result. The
     /// operands' range is proved at each use, and the result saturates rather than wraps if a
     /// proof were ever wrong.
+    #[must_use]
     fn mul_rn(self, o: Self) -> Self;
     /// Square root; negative inputs (and NaN) give 0. Floats use `libm` (correctly rounded, so
     /// identical everywhere); fixed point an integer square root, truncated.
+    #[must_use]
     fn sqrt(self) -> Self;
     /// Division. Floats: IEEE `/`. Fixed point saturates, and a zero divisor gives `MAX` or
     /// `MIN` with the dividend's sign (0 for 0/0): callers guard against zero divisors anyway.
+    #[must_use]
     fn div(self, o: Self) -> Self;
     /// Base-2 logarithm. For `x ≤ 0` (and NaN) it returns the most negative value of the type
     /// (−∞ for floats, `MIN` for fixed point); `+∞` gives `+∞`.
+    #[must_use]
     fn log2(self) -> Self;
     /// Whether the value is NaN (never, for fixed point).
+    #[must_use]
     fn is_nan(self) -> bool;
     /// Turns `-0.0` into `+0.0` and leaves every other value unchanged, so that results that are
     /// equal as numbers are equal bit for bit.
+    #[must_use]
     fn canonical(self) -> Self;
 
     /// `self` clamped to `[lo, hi]`; NaN gives `lo`.

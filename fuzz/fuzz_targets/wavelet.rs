@@ -28,8 +28,8 @@ fuzz_target!(|input: Input| {
     let n = input.normal.map(f32::from_bits);
     let q = input.coords.map(|b| I16F16::from_bits(b as i32));
     let nq = input.normal.map(|b| I16F16::from_bits(b as i32));
-    let band3 = Wavelet::new(&TILE3_I16, input.seed);
-    let band2 = Wavelet::new(&TILE2_I16, input.seed);
+    let band3 = Wavelet::new(input.seed, &TILE3_I16);
+    let band2 = Wavelet::new(input.seed, &TILE2_I16);
     let b3 = Noise::<f32, 3>::amplitude_bound(&band3);
     for v in [band3.sample(p), band2.sample([p[0], p[1]])] {
         assert!(v.is_finite() && v.abs() <= b3.max(Noise::<f32, 2>::amplitude_bound(&band2)));
@@ -82,7 +82,7 @@ fuzz_target!(|input: Input| {
             assert!(input.weights.len() > 16 || bad_weight || !(-24..=8).contains(&input.first));
         }
         Ok(bands) => {
-            let m = Multiband::new(&TILE3_I16, input.seed, bands, distribution);
+            let m = Multiband::new(input.seed, &TILE3_I16, bands, distribution);
             let bound = Noise::<f32, 3>::amplitude_bound(&m);
             let v: f32 = m.sample(p);
             assert!(v.is_finite() && v.abs() <= bound, "{v} > {bound}");

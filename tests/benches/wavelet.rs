@@ -23,9 +23,9 @@ fn wavelet(c: &mut Criterion) {
     g.sample_size(10);
     let perlin = Perlin::new(0);
     let (w2, w3, w3q) = (
-        Wavelet::new(&TILE2, 0),
-        Wavelet::new(&TILE3, 0),
-        Wavelet::new(&TILE3_I16, 0),
+        Wavelet::new(0, &TILE2),
+        Wavelet::new(0, &TILE3),
+        Wavelet::new(0, &TILE3_I16),
     );
     let z = 0.37f32;
     let zf = I16F16::from_num(z);

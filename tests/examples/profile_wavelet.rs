@@ -2,7 +2,7 @@
 use bandnoise::Noise;
 use bandnoise::wavelet::{TILE3, Wavelet};
 fn main() {
-    let w = Wavelet::new(&TILE3, 0);
+    let w = Wavelet::new(0, &TILE3);
     let mut acc = 0.0f32;
     for j in 0..64 {
         for i in 0..1024 {

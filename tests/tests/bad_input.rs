@@ -141,14 +141,14 @@ use bandnoise::wavelet::{
 
 #[test]
 fn multiband_samples_the_origin_for_nan_and_infinite_coordinates() {
-    let m = Multiband::new(&TILE2, 0, Bands::default(), Distribution::Gaussian);
+    let m = Multiband::new(0, &TILE2, Bands::default(), Distribution::Gaussian);
     let origin: f32 = m.sample([0.0, 0.0]);
     for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
         assert_eq!(m.sample([bad, 0.0f32]).to_bits(), origin.to_bits(), "{bad}");
     }
     let m64: f64 = m.sample([f64::NAN, 5.25]);
     assert_eq!(m64.to_bits(), m.sample([0.0f64, 5.25]).to_bits());
-    let u = Multiband::new(&TILE3, 0, Bands::default(), Distribution::Uniform);
+    let u = Multiband::new(0, &TILE3, Bands::default(), Distribution::Uniform);
     let n = [0.0f32, 0.0, 1.0];
     assert_eq!(
         u.sample_projected([f32::NAN, 0.5, 0.5], n).to_bits(),
@@ -171,7 +171,7 @@ fn large_normals_keep_their_direction() {
     }
     assert_eq!(unit_normal([1e20f32, 0.0, 0.0]), [1.0, 0.0, 0.0]);
     assert_eq!(unit_normal([0.0, f64::MAX, 0.0]), [0.0, 1.0, 0.0]);
-    let band = Wavelet::new(&TILE3, 0);
+    let band = Wavelet::new(0, &TILE3);
     let p = [0.3f32, 0.6, 2.0];
     assert_eq!(
         band.sample_projected(p, [1e20, 0.0, 0.0]).to_bits(),
@@ -252,7 +252,7 @@ fn fixed_point_saturates_with_users_noises_and_tiles() {
 
     // Projected weights sum to 2 along an axis: 2 · 17000 saturates.
     let tile = Flat(17000.0);
-    let band = Wavelet::new(&tile, 0);
+    let band = Wavelet::new(0, &tile);
     let z = [I16F16::ZERO, I16F16::ZERO, I16F16::ONE];
     let p = [
         I16F16::from_num(0.3),
@@ -267,7 +267,7 @@ fn fixed_point_saturates_with_users_noises_and_tiles() {
     // an ulp at a fraction of ½ (the only such fraction, found exhaustively): it saturates.
     for c in [32768.0f32, -32768.0] {
         let tile = Flat(c);
-        let band = Wavelet::new(&tile, 0);
+        let band = Wavelet::new(0, &tile);
         for p in [[0.3f32, 0.6], [0.5, 0.5], [1.7, -3.2]] {
             let v: I16F16 = band.sample(p.map(I16F16::from_num));
             assert!((v.to_num::<f32>() - c).abs() < 0.01, "{c} at {p:?}: {v}");

@@ -147,10 +147,10 @@ fn fractal_sums_in_batch_equal_point_evaluation() {
 #[test]
 fn wavelet_noise_in_batch_equals_point_evaluation() {
     let mut rng = Rng::from_env(73);
-    check_all_types::<2, _>("wavelet", &Wavelet::new(&TILE2, 3), &mut rng);
-    check_all_types::<3, _>("wavelet", &Wavelet::new(&TILE3, 3), &mut rng);
-    check_all_types::<3, _>("wavelet i16", &Wavelet::new(&TILE3_I16, 3), &mut rng);
-    let periodic = Wavelet::new(&TILE2, 6).with_tiling(Tiling::Periodic);
+    check_all_types::<2, _>("wavelet", &Wavelet::new(3, &TILE2), &mut rng);
+    check_all_types::<3, _>("wavelet", &Wavelet::new(3, &TILE3), &mut rng);
+    check_all_types::<3, _>("wavelet i16", &Wavelet::new(3, &TILE3_I16), &mut rng);
+    let periodic = Wavelet::new(6, &TILE2).with_tiling(Tiling::Periodic);
     check_all_types::<2, _>("wavelet periodic", &periodic, &mut rng);
     // Fine grids: whole chunks inside one block (the vectorised path), and across borders.
     // Rows whose coefficients reach into the next block along y or z (every lane alike).
@@ -159,8 +159,8 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
         Grid::new([-40.3f32, 31.2, 0.37], [0.01, 0.2, 0.0], [300, 4, 1]),
     ] {
         for band in [
-            Wavelet::new(&TILE3, 1),
-            Wavelet::new(&TILE3, 1).with_tiling(Tiling::Periodic),
+            Wavelet::new(1, &TILE3),
+            Wavelet::new(1, &TILE3).with_tiling(Tiling::Periodic),
         ] {
             let mut out = vec![0.0f32; fine.len()];
             band.fill_grid(&fine, &mut out).unwrap();
@@ -174,9 +174,9 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
             }
         }
     }
-    let multi = Multiband::new(&TILE3, 1, Bands::default(), Distribution::Uniform);
+    let multi = Multiband::new(1, &TILE3, Bands::default(), Distribution::Uniform);
     check_all_types::<3, _>("multiband", &multi, &mut rng);
-    let fbm = Fractal::fbm(Wavelet::new(&TILE2, 4), Octaves::default());
+    let fbm = Fractal::fbm(Wavelet::new(4, &TILE2), Octaves::default());
     check::<f32, 2, _>("fractal wavelet", &fbm, &mut rng);
 }
 

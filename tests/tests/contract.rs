@@ -153,7 +153,7 @@ fn sweep_filtered<R: Special, const D: usize, N: Noise<R, D>>(
     f: &Fractal<N>,
     rng: &mut Rng,
 ) {
-    let bound = f.amplitude_bound();
+    let bound = Noise::<R, D>::amplitude_bound(f);
     let mut footprints: Vec<[R; D]> = vec![
         [R::ZERO; D],
         from_fn(|_| R::from_f64(rng.f64_in(-0.3, 0.3))),
@@ -317,16 +317,16 @@ fn every_noise<R: Special>(rng: &mut Rng) {
     // Wavelet bands over the default tiles, in both tilings, and the quantized tiles.
     for tiling in [Tiling::Varied, Tiling::Periodic] {
         let name = &format!("wavelet {tiling:?}");
-        sweep_noise::<R, 2, _>(name, &Wavelet::new(&TILE2, 6).with_tiling(tiling), rng);
-        sweep_noise::<R, 3, _>(name, &Wavelet::new(&TILE3, 6).with_tiling(tiling), rng);
+        sweep_noise::<R, 2, _>(name, &Wavelet::new(6, &TILE2).with_tiling(tiling), rng);
+        sweep_noise::<R, 3, _>(name, &Wavelet::new(6, &TILE3).with_tiling(tiling), rng);
     }
-    sweep_noise::<R, 2, _>("wavelet i16", &Wavelet::new(&TILE2_I16, 6), rng);
-    sweep_noise::<R, 3, _>("wavelet i16", &Wavelet::new(&TILE3_I16, 6), rng);
+    sweep_noise::<R, 2, _>("wavelet i16", &Wavelet::new(6, &TILE2_I16), rng);
+    sweep_noise::<R, 3, _>("wavelet i16", &Wavelet::new(6, &TILE3_I16), rng);
     // Projected: at most three times the tile's largest coefficient.
-    let band = Wavelet::new(&TILE3, 6);
+    let band = Wavelet::new(6, &TILE3);
     let b = 3.0 * Noise::<R, 3>::amplitude_bound(&band);
     sweep_projected::<R>("wavelet", |p, n| band.sample_projected(p, n), b, rng);
-    let band = Wavelet::new(&TILE3_I16, 6);
+    let band = Wavelet::new(6, &TILE3_I16);
     let b = 3.0 * Noise::<R, 3>::amplitude_bound(&band);
     sweep_projected::<R>("wavelet i16", |p, n| band.sample_projected(p, n), b, rng);
 
@@ -340,15 +340,15 @@ fn every_noise<R: Special>(rng: &mut Rng) {
     for distribution in [Distribution::Gaussian, Distribution::Uniform] {
         for bands in &band_lists {
             let name = &format!("multiband {distribution:?} from {}", bands.first());
-            let m2 = Multiband::new(&TILE2, 8, bands.clone(), distribution);
-            let m3 = Multiband::new(&TILE3, 8, bands.clone(), distribution);
+            let m2 = Multiband::new(8, &TILE2, bands.clone(), distribution);
+            let m3 = Multiband::new(8, &TILE3, bands.clone(), distribution);
             sweep_noise::<R, 2, _>(name, &m2, rng);
             sweep_noise::<R, 3, _>(name, &m3, rng);
             let b = m3.projected_bound();
             sweep_projected::<R>(name, |p, n| m3.sample_projected(p, n), b, rng);
         }
         // A fractal sum over multiband noise.
-        let m = Multiband::new(&TILE2, 8, Bands::default(), distribution);
+        let m = Multiband::new(8, &TILE2, Bands::default(), distribution);
         let f = Fractal::fbm(m, Octaves::new(3, 2.0, 0.5).expect("valid"));
         let name = &format!("fbm of multiband {distribution:?}");
         sweep_noise::<R, 2, _>(name, &f, rng);

@@ -31,7 +31,7 @@ fn random_normal(rng: &mut Rng) -> [f32; 3] {
 fn band_variances_and_means_match_the_paper() {
     let mut rng = Rng::from_env(30);
     // 1. Sampling a band reproduces its tile's exact variance (computed at generation).
-    let (b2, b3) = (Wavelet::new(&TILE2, 1), Wavelet::new(&TILE3, 1));
+    let (b2, b3) = (Wavelet::new(1, &TILE2), Wavelet::new(1, &TILE3));
     let (p2, p3) = (
         b2.with_tiling(Tiling::Periodic),
         b3.with_tiling(Tiling::Periodic),
@@ -64,7 +64,7 @@ fn band_variances_and_means_match_the_paper() {
         v3 += t3.variance() as f64;
         if s <= 6 {
             // Projected: sampled over random normals (no closed form here).
-            let b = Wavelet::new(&*t3, s).with_tiling(Tiling::Periodic);
+            let b = Wavelet::new(s, &*t3).with_tiling(Tiling::Periodic);
             let normals: Vec<[f32; 3]> = (0..20_000).map(|_| random_normal(&mut rng)).collect();
             let i = std::cell::Cell::new(0);
             let (a, m) = moments::<3>(&mut rng, 20_000, |p| {
@@ -124,7 +124,7 @@ fn one_band_is_band_limited_where_perlin_is_not() {
     // noise at half the frequency (p/2) has its nominal band there too. Power below half the
     // lower edge (1/8) is what should not be there (Fig. 8a against 8d).
     let (side, spacing, cutoff) = (256, 0.5, 0.125);
-    let band = Wavelet::new(&TILE2, 0).with_tiling(Tiling::Periodic);
+    let band = Wavelet::new(0, &TILE2).with_tiling(Tiling::Periodic);
     let perlin = Perlin::new(0);
     let w = low_frequency_fraction(
         &grid(side, spacing, |x, y| band.sample([x, y])),
@@ -151,7 +151,7 @@ fn one_band_is_band_limited_where_perlin_is_not() {
 fn projection_keeps_a_plane_band_limited_where_slicing_does_not() {
     // The plane z = 3.3 through 3D noise (Fig. 8e against 8f).
     let (side, spacing, cutoff) = (256, 0.5, 0.125);
-    let band = Wavelet::new(&TILE3, 0).with_tiling(Tiling::Periodic);
+    let band = Wavelet::new(0, &TILE3).with_tiling(Tiling::Periodic);
     let sliced = low_frequency_fraction(
         &grid(side, spacing, |x, y| band.sample([x, y, 3.3])),
         side,
@@ -192,7 +192,7 @@ fn projection_keeps_a_plane_band_limited_where_slicing_does_not() {
 
 #[test]
 fn varied_tiling_is_continuous_across_block_borders_and_barely_leaks() {
-    let band = Wavelet::new(&TILE2, 9);
+    let band = Wavelet::new(9, &TILE2);
     let periodic = band.with_tiling(Tiling::Periodic);
     let n = 64.0f64;
     let mut rng = Rng::from_env(31);
@@ -219,7 +219,7 @@ fn varied_tiling_is_continuous_across_block_borders_and_barely_leaks() {
     // What the borders cost in band limit.
     let (side, spacing, cutoff) = (256, 0.5, 0.125);
     let small: Box<Tile2<16>> = Box::new(Tile2::generate(5)); // many borders in the grid
-    let varied = Wavelet::new(&*small, 3);
+    let varied = Wavelet::new(3, &*small);
     let plain = varied.with_tiling(Tiling::Periodic);
     let fv = low_frequency_fraction(
         &grid(side, spacing, |x, y| varied.sample([x, y])),
@@ -244,7 +244,7 @@ fn varied_tiling_is_continuous_across_block_borders_and_barely_leaks() {
 #[test]
 fn quantized_tiles_are_within_half_a_step() {
     let mut rng = Rng::from_env(32);
-    let (f, q) = (Wavelet::new(&TILE3, 1), Wavelet::new(&TILE3_I16, 1));
+    let (f, q) = (Wavelet::new(1, &TILE3), Wavelet::new(1, &TILE3_I16));
     let step = 1.0 / (1u32 << TILE3_I16.shift()) as f64;
     let mut worst = 0.0f64;
     for _ in 0..100_000 {
@@ -252,7 +252,7 @@ fn quantized_tiles_are_within_half_a_step() {
         let (a, b): (f32, f32) = (f.sample(p), q.sample(p));
         worst = worst.max((a - b).abs() as f64);
     }
-    let (f2, q2) = (Wavelet::new(&TILE2, 1), Wavelet::new(&TILE2_I16, 1));
+    let (f2, q2) = (Wavelet::new(1, &TILE2), Wavelet::new(1, &TILE2_I16));
     for _ in 0..100_000 {
         let p: [f32; 2] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0) as f32);
         let (a, b): (f32, f32) = (f2.sample(p), q2.sample(p));
@@ -270,8 +270,8 @@ fn quantized_tiles_are_within_half_a_step() {
 #[test]
 fn fixed_point_follows_f32() {
     let mut rng = Rng::from_env(33);
-    let band = Wavelet::new(&TILE3_I16, 4);
-    let multi = Multiband::new(&TILE3_I16, 4, Bands::default(), Distribution::Gaussian);
+    let band = Wavelet::new(4, &TILE3_I16);
+    let multi = Multiband::new(4, &TILE3_I16, Bands::default(), Distribution::Gaussian);
     let (mut w_band, mut w_proj, mut w_multi) = (0.0f64, 0.0f64, 0.0f64);
     for _ in 0..20_000 {
         let p: [I16F16; 3] = rng.exact_point(200);
@@ -296,9 +296,9 @@ fn fixed_point_follows_f32() {
 fn multiband_has_variance_one_and_a_flat_uniform_distribution() {
     let mut rng = Rng::from_env(34);
     let bands = Bands::new(-1, &[1.0, 0.7, 0.5, 0.3]).unwrap();
-    let g2 = Multiband::new(&TILE2, 2, bands.clone(), Distribution::Gaussian);
-    let g3 = Multiband::new(&TILE3, 2, bands.clone(), Distribution::Gaussian);
-    let u3 = Multiband::new(&TILE3, 2, bands.clone(), Distribution::Uniform);
+    let g2 = Multiband::new(2, &TILE2, bands.clone(), Distribution::Gaussian);
+    let g3 = Multiband::new(2, &TILE3, bands.clone(), Distribution::Gaussian);
+    let u3 = Multiband::new(2, &TILE3, bands.clone(), Distribution::Uniform);
     let (v2, _) = moments::<2>(&mut rng, 300_000, |p| g2.sample(p));
     let (v3, _) = moments::<3>(&mut rng, 300_000, |p| g3.sample(p));
     let (vu, mu) = moments::<3>(&mut rng, 300_000, |p| u3.sample(p));
@@ -331,17 +331,17 @@ fn multiband_has_variance_one_and_a_flat_uniform_distribution() {
 
 #[test]
 fn bad_input_gives_documented_results() {
-    let band = Wavelet::new(&TILE3, 0);
-    let multi = Multiband::new(&TILE3, 0, Bands::default(), Distribution::Gaussian);
+    let band = Wavelet::new(0, &TILE3);
+    let multi = Multiband::new(0, &TILE3, Bands::default(), Distribution::Gaussian);
     let zero = Multiband::new(
-        &TILE3,
         0,
+        &TILE3,
         Bands::new(0, &[0.0, 0.0]).unwrap(),
         Distribution::Uniform,
     );
     let empty = Multiband::new(
-        &TILE2,
         0,
+        &TILE2,
         Bands::new(0, &[]).unwrap(),
         Distribution::Gaussian,
     );
@@ -459,7 +459,7 @@ fn tiny_and_huge_band_weights_normalise() {
         [1e-30, 0.0, 0.0],
     ] {
         let bands = Bands::new(-1, &weights).unwrap();
-        let m = Multiband::new(&TILE3_I16, 0, bands, Distribution::Gaussian);
+        let m = Multiband::new(0, &TILE3_I16, bands, Distribution::Gaussian);
         let p = [f32::from_bits(4294966783), 0.37, 1.5];
         let v: f32 = m.sample(p);
         assert!(
@@ -471,14 +471,14 @@ fn tiny_and_huge_band_weights_normalise() {
     }
     // Scale does not matter: the normalised noise is the same for weights ×1e-20 and ×1.
     let a = Multiband::new(
-        &TILE3_I16,
         0,
+        &TILE3_I16,
         Bands::new(0, &[1.0, 0.5]).unwrap(),
         Distribution::Gaussian,
     );
     let b = Multiband::new(
-        &TILE3_I16,
         0,
+        &TILE3_I16,
         Bands::new(0, &[1e-20, 0.5e-20]).unwrap(),
         Distribution::Gaussian,
     );

@@ -81,7 +81,7 @@ fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
         NoiseKind::CNoise => fill_lattice::<R, _>(CNoise::new(s), p, size, values),
         NoiseKind::MNoise => fill_lattice::<R, _>(MNoise::<61>::new(s), p, size, values),
         NoiseKind::Wavelet => {
-            let m = Multiband::new(&WEB_TILE3, s, p.bands.clone(), p.distribution);
+            let m = Multiband::new(s, &WEB_TILE3, p.bands.clone(), p.distribution);
             if p.projected {
                 fill::<R, _>(&Projected(m), p, size, values)
             } else {
@@ -249,7 +249,7 @@ pub fn bench_sum(kind: &str, count: u32) -> Result<f64, JsValue> {
         "perlin" => Ok(points(&|p| perlin.sample(p))),
         "mnoise" => Ok(points(&|p| mnoise.sample(p))),
         "wavelet" => {
-            let wavelet = Wavelet::new(&TILE2_I16, 0);
+            let wavelet = Wavelet::new(0, &TILE2_I16);
             Ok(points(&|p| wavelet.sample(p)))
         }
         "perlin-batch" => Ok(bench_rows(&perlin, count)),

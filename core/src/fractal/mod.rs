@@ -158,7 +158,7 @@ pub enum Kind {
 /// let three = Fractal::fbm(Perlin::new(0), Octaves::new(3, 1.99, 0.5).unwrap());
 /// assert_eq!(far, three.sample([0.3, 0.7, 0.1]));
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Fractal<N> {
     noise: N,
     octaves: Octaves,
@@ -168,6 +168,7 @@ pub struct Fractal<N> {
 
 impl<N> Fractal<N> {
     /// A fractal sum of `kind`.
+    #[must_use]
     pub fn new(noise: N, octaves: Octaves, kind: Kind) -> Self {
         Self {
             noise,
@@ -178,16 +179,19 @@ impl<N> Fractal<N> {
     }
 
     /// Fractional Brownian motion.
+    #[must_use]
     pub fn fbm(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Fbm)
     }
 
     /// Turbulence.
+    #[must_use]
     pub fn turbulence(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Turbulence)
     }
 
     /// Ridged multifractal.
+    #[must_use]
     pub fn ridged(noise: N, octaves: Octaves) -> Self {
         Self::new(noise, octaves, Kind::Ridged)
     }
@@ -208,16 +212,19 @@ impl<N> Fractal<N> {
     }
 
     /// The octave settings.
+    #[must_use]
     pub fn octaves(&self) -> &Octaves {
         &self.octaves
     }
 
     /// The kind of sum.
+    #[must_use]
     pub fn kind(&self) -> Kind {
         self.kind
     }
 
     /// The noise summed.
+    #[must_use]
     pub fn noise(&self) -> &N {
         &self.noise
     }
@@ -338,6 +345,8 @@ impl<N> Fractal<N> {
         self.sum(p, clamp.full, clamp.partial, true)
     }
 }
+
+crate::noise::inherent_amplitude_bound!(Fractal<N>, [N]);
 
 impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N> {
     #[inline]

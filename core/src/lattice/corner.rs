@@ -184,6 +184,7 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
 }
 
 gradient_noise_impls!(MNoise<M>, [const M: u32], |_, d| half_dims(d));
+crate::noise::inherent_amplitude_bound!(MNoise<M>, [const M: u32]);
 
 impl<const M: u32, const D: usize> WrapCorners<D> for MNoise<M> {
     /// The seed's translation moves the lattice within the period, so a period of `M` is the
@@ -265,6 +266,7 @@ impl<const D: usize> GradientLattice<D> for CNoise {
 }
 
 gradient_noise_impls!(CNoise, [], |_, d| half_dims(d));
+crate::noise::inherent_amplitude_bound!(CNoise, []);
 
 impl<const D: usize> WrapCorners<D> for CNoise {
     #[inline]

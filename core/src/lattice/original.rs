@@ -155,6 +155,7 @@ fn sqrt_dims_half(dims: usize) -> f32 {
 }
 
 gradient_noise_impls!(OriginalPerlin, [], |_, d| sqrt_dims_half(d));
+crate::noise::inherent_amplitude_bound!(OriginalPerlin, []);
 
 impl<const D: usize> WrapCorners<D> for OriginalPerlin {
     #[inline]

@@ -49,7 +49,7 @@ use crate::hash::chain::Wrap;
 /// assert_eq!(v, tile.sample([2.25 + 16.0, 5.5 - 8.0]));
 /// assert!(Periodic::new(Perlin::new(3), [0, 8]).is_err());
 /// ```
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Periodic<N, const D: usize> {
     noise: N,
     wrap: Wrap<D>,
@@ -146,3 +146,5 @@ impl<R: crate::Real, const D: usize> crate::Noise<R, D> for Periodic<ValueNoise,
         });
     }
 }
+
+crate::noise::inherent_amplitude_bound!(Periodic<N, P>, [N, const P: usize]);

@@ -325,6 +325,7 @@ impl GradientLattice<4> for Perlin {
 }
 
 gradient_noise_impls!(Perlin, [], |_, d| half_dims(d));
+crate::noise::inherent_amplitude_bound!(Perlin, []);
 
 #[cfg(test)]
 mod tests {

@@ -117,6 +117,8 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
     }
 }
 
+crate::noise::inherent_amplitude_bound!(ValueNoise, []);
+
 impl<const D: usize> WrapCorners<D> for ValueNoise {
     #[inline]
     fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {

@@ -92,7 +92,7 @@ pub enum Tiling {
 /// use bandnoise::{Noise, wavelet::{Tile3, Wavelet}};
 ///
 /// static TILE: Tile3<16> = Tile3::generate(1);
-/// let band = Wavelet::new(&TILE, 42);
+/// let band = Wavelet::new(42, &TILE);
 /// let v: f32 = band.sample([0.5, 1.25, -3.0]);
 /// assert!(v.is_finite());
 /// ```
@@ -111,10 +111,20 @@ impl<T> Clone for Wavelet<'_, T> {
 }
 impl<T> Copy for Wavelet<'_, T> {}
 
+/// Equal seed, tiling and tile (compared by value; the same tile by address first).
+impl<T: PartialEq> PartialEq for Wavelet<'_, T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.seed == other.seed
+            && self.tiling == other.tiling
+            && (core::ptr::eq(self.tile, other.tile) || self.tile == other.tile)
+    }
+}
+
 impl<'t, T> Wavelet<'t, T> {
-    /// A band over `tile`, with hashed orientations ([`Tiling::Varied`]) chosen by `seed`.
+    /// A band over `tile`, with hashed orientations ([`Tiling::Varied`]) chosen by `seed`
+    /// (the seed first, as in every noise's constructor).
     #[must_use]
-    pub const fn new(tile: &'t T, seed: u32) -> Self {
+    pub const fn new(seed: u32, tile: &'t T) -> Self {
         Self {
             tile,
             seed,
@@ -447,6 +457,8 @@ impl<T> Wavelet<'_, T> {
         }
     }
 }
+
+crate::noise::inherent_amplitude_bound!(Wavelet<'_, T>, [T]);
 
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
     #[inline]

@@ -151,11 +151,11 @@ pub enum Distribution {
 /// ```
 /// use bandnoise::{Noise, wavelet::{Bands, Distribution, Multiband, TILE2}};
 ///
-/// let m = Multiband::new(&TILE2, 7, Bands::default(), Distribution::Uniform);
+/// let m = Multiband::new(7, &TILE2, Bands::default(), Distribution::Uniform);
 /// let v: f32 = m.sample([0.25, 4.5]);
 /// assert!(v.abs() <= 1.0);
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Multiband<'t, T> {
     band: Wavelet<'t, T>,
     bands: Bands,
@@ -196,7 +196,11 @@ fn band_offset(seed: u32, band: i32, axis: usize) -> i32 {
 
 impl<'t, T> Multiband<'t, T> {
     /// Multiband noise over `tile`; `seed` picks tile orientations and band offsets.
-    pub fn new(tile: &'t T, seed: u32, bands: Bands, distribution: Distribution) -> Self
+    ///
+    /// Not `const`: the normalisation takes square roots in `f64` (`libm`), and a [`Bands`]
+    /// list is validated when it is built, at run time.
+    #[must_use]
+    pub fn new(seed: u32, tile: &'t T, bands: Bands, distribution: Distribution) -> Self
     where
         T: TileVariance,
     {
@@ -230,7 +234,7 @@ impl<'t, T> Multiband<'t, T> {
             let _ = scaled.push([s(var), s(var), s(projected)]);
         }
         Self {
-            band: Wavelet::new(tile, seed),
+            band: Wavelet::new(seed, tile),
             bands,
             distribution,
             scaled,
@@ -245,11 +249,13 @@ impl<'t, T> Multiband<'t, T> {
     }
 
     /// The bands.
+    #[must_use]
     pub fn bands(&self) -> &Bands {
         &self.bands
     }
 
     /// The distribution.
+    #[must_use]
     pub fn distribution(&self) -> Distribution {
         self.distribution
     }
@@ -325,6 +331,8 @@ impl<T: TileData<3>> Multiband<'_, T> {
         self.bound(2, 3.0 * self.band.tile().max_abs())
     }
 }
+
+crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
 
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     #[inline]

@@ -100,7 +100,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// use bandnoise::wavelet::{Tile3, Wavelet};
     ///
     /// static TILE: Tile3<16> = Tile3::generate(1);
-    /// let band = Wavelet::new(&TILE, 0);
+    /// let band = Wavelet::new(0, &TILE);
     /// let up: f32 = band.sample_projected([0.3, 0.6, 2.0], [0.0, 0.0, 1.0]);
     /// // Non-unit normals are normalised.
     /// assert_eq!(up, band.sample_projected([0.3, 0.6, 2.0], [0.0, 0.0, 5.0]));

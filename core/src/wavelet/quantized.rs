@@ -46,9 +46,9 @@ pub struct QuantizedTile2<const N: usize> {
 ///
 /// const TILE: Tile3<8> = Tile3::generate(3);
 /// static SMALL: QuantizedTile3<8> = QuantizedTile3::quantize(&TILE);
-/// let band = Wavelet::new(&SMALL, 0);
+/// let band = Wavelet::new(0, &SMALL);
 /// let v: I16F16 = band.sample([I16F16::from_num(1.5), I16F16::ZERO, I16F16::ONE]);
-/// let f: f32 = Wavelet::new(&TILE, 0).sample([1.5, 0.0, 1.0]);
+/// let f: f32 = Wavelet::new(0, &TILE).sample([1.5, 0.0, 1.0]);
 /// assert!((v.to_num::<f32>() - f).abs() < 1e-3);
 /// ```
 #[derive(Clone, Debug, PartialEq)]
