@@ -14,7 +14,7 @@ use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};
-use bandnoise::{I16F16, Noise, Real};
+use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 
 /// Samples per checksum.
 pub const POINTS: u32 = 64;

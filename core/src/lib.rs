@@ -76,7 +76,7 @@ mod real;
 pub mod wavelet;
 
 pub use error::Error;
-pub use noise::{Noise, NoiseGradient};
+pub use noise::{FilteredNoise, Noise, NoiseGradient, ProjectedNoise};
 pub use real::{I16F16, Real};
 
 /// The traits and types most programs need: `use bandnoise::prelude::*;`.
@@ -85,5 +85,5 @@ pub mod prelude {
     pub use crate::fractal::{Fractal, Kind, Octaves};
     pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
-    pub use crate::{I16F16, Noise, NoiseGradient, Real};
+    pub use crate::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
 }

@@ -120,6 +120,85 @@ pub trait NoiseGradient<R: Real, const D: usize>: Noise<R, D> {
     fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]);
 }
 
+/// A noise that anti-aliases itself from a sample's footprint (pbrt §10.6.3): the detail
+/// finer than the footprint, which a pixel cannot show without aliasing, is left out.
+///
+/// Implemented by [`Fractal`](crate::fractal::Fractal) (pbrt's octave clamping).
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{FilteredNoise, Noise, fractal::{Fractal, Octaves}, lattice::Perlin};
+///
+/// fn pixel<N: FilteredNoise<f32, 2>>(noise: &N, p: [f32; 2], pixel_size: f32) -> f32 {
+///     noise.sample_filtered(p, [pixel_size, 0.0], [0.0, pixel_size])
+/// }
+/// let fbm = Fractal::fbm(Perlin::new(0), Octaves::default());
+/// assert_eq!(pixel(&fbm, [0.3, 0.7], 0.0), fbm.sample([0.3, 0.7])); // no footprint: every octave
+/// ```
+pub trait FilteredNoise<R: Real, const D: usize>: Noise<R, D> {
+    /// The noise at `p` for a sample whose footprint in noise space is spanned by `dpdx` and
+    /// `dpdy` (the change of `p` from one pixel to the next).
+    ///
+    /// # Contract
+    ///
+    /// As [`Noise::sample`] for `p`; any footprint (NaN, ±∞, huge) gives a value, never a
+    /// panic, and the footprint is symmetric in `dpdx` and `dpdy`.
+    #[must_use]
+    fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R;
+}
+
+/// A 3D noise that can be projected onto a surface (Cook & DeRose 2005, §3.7): integrated along
+/// the surface normal, so that the noise on the surface keeps its band limit, where a slice
+/// through 3D noise would not.
+///
+/// Implemented by [`Wavelet`](crate::wavelet::Wavelet) and
+/// [`Multiband`](crate::wavelet::Multiband) over 3D tiles.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{ProjectedNoise, wavelet::{TILE3, Wavelet}};
+///
+/// fn on_sphere<N: ProjectedNoise<f32>>(noise: &N, p: [f32; 3]) -> f32 {
+///     noise.sample_projected(p, p) // the normal of a sphere at the origin points along p
+/// }
+/// let band = Wavelet::new(0, &TILE3);
+/// assert!(on_sphere(&band, [0.0, 0.6, 0.8]).abs() <= band.projected_bound());
+/// ```
+pub trait ProjectedNoise<R: Real>: Noise<R, 3> {
+    /// The noise projected onto the surface through `p` with normal `normal` (any finite
+    /// non-zero length; see [`unit_normal`](crate::wavelet::unit_normal)).
+    ///
+    /// # Contract
+    ///
+    /// As [`Noise::sample`] for `p`; any normal gives a value, never a panic; the result is
+    /// within [`projected_bound`](Self::projected_bound).
+    #[must_use]
+    fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R;
+
+    /// A bound on `|sample_projected|`.
+    #[must_use]
+    fn projected_bound(&self) -> f32;
+}
+
+impl<R: Real, const D: usize, N: FilteredNoise<R, D> + ?Sized> FilteredNoise<R, D> for &N {
+    #[inline]
+    fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
+        (**self).sample_filtered(p, dpdx, dpdy)
+    }
+}
+
+impl<R: Real, N: ProjectedNoise<R> + ?Sized> ProjectedNoise<R> for &N {
+    #[inline]
+    fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R {
+        (**self).sample_projected(p, normal)
+    }
+    fn projected_bound(&self) -> f32 {
+        (**self).projected_bound()
+    }
+}
+
 impl<R: Real, const D: usize, N: Noise<R, D> + ?Sized> Noise<R, D> for &N {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {

@@ -6,7 +6,7 @@
 use arbitrary::Arbitrary;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::lattice::{MNoise, Perlin};
-use bandnoise::{I16F16, Noise};
+use bandnoise::{FilteredNoise, I16F16, Noise};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
@@ -42,8 +42,7 @@ fuzz_target!(|input: Input| {
         );
         return;
     };
-    let fixed =
-        Octaves::new(input.count, input.lacunarity, input.gain).expect("same checks");
+    let fixed = Octaves::new(input.count, input.lacunarity, input.gain).expect("same checks");
     let f = Fractal::new(Perlin::new(1), octaves, kind);
     let bound = Noise::<f32, 3>::amplitude_bound(&f);
     let filtered = f.sample_filtered(p, dx, dy);

@@ -10,7 +10,7 @@ use arbitrary::Arbitrary;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, unit_normal,
 };
-use bandnoise::{I16F16, Noise};
+use bandnoise::{I16F16, Noise, ProjectedNoise};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]

@@ -4,7 +4,7 @@ use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
 use bandnoise::wavelet::{DEFAULT_TILE_SEED, Multiband, QuantizedTile3, TILE2_I16, Tile3, Wavelet};
-use bandnoise::{I16F16, Noise, Real};
+use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 use wasm_bindgen::Clamped;
 use wasm_bindgen::prelude::*;
 use web_sys::{CanvasRenderingContext2d, ImageData};

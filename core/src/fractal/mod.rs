@@ -9,7 +9,7 @@
 mod footprint;
 
 use crate::batch::LANES;
-use crate::{Error, I16F16, Noise, Real};
+use crate::{Error, FilteredNoise, I16F16, Noise, Real};
 use footprint::{footprint_len2, octaves_for};
 
 /// A validated setting: its `f32` value, and that value rounded once to I16F16.
@@ -147,7 +147,7 @@ pub enum Kind {
 /// # Examples
 ///
 /// ```
-/// use bandnoise::{Noise, fractal::{Fractal, Octaves}, lattice::Perlin};
+/// use bandnoise::{FilteredNoise, Noise, fractal::{Fractal, Octaves}, lattice::Perlin};
 ///
 /// let fbm = Fractal::fbm(Perlin::new(0), Octaves::default());
 /// let v: f32 = fbm.sample([0.3, 0.7, 0.1]);
@@ -309,7 +309,11 @@ impl<N> Fractal<N> {
         }
         sum.map(R::canonical)
     }
+}
 
+crate::noise::inherent_amplitude_bound!(Fractal<N>, [N]);
+
+impl<N: Noise<R, D>, R: Real, const D: usize> FilteredNoise<R, D> for Fractal<N> {
     /// The anti-aliased sum for a sample whose footprint in noise space is spanned by `dpdx`
     /// and `dpdy` (the change of `p` from one pixel to the next), as pbrt's `FBm` and
     /// `Turbulence` compute it.
@@ -331,22 +335,11 @@ impl<N> Fractal<N> {
     /// Never panics, for any coordinates and footprints (NaN, ±∞, huge, fixed point's extremes:
     /// octave frequencies wrap and sums saturate in fixed point); the result is finite in floats
     /// and within [`amplitude_bound`](Noise::amplitude_bound).
-    #[must_use]
-    pub fn sample_filtered<R: Real, const D: usize>(
-        &self,
-        p: [R; D],
-        dpdx: [R; D],
-        dpdy: [R; D],
-    ) -> R
-    where
-        N: Noise<R, D>,
-    {
+    fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
         let clamp = octaves_for(footprint_len2(&dpdx, &dpdy), self.octaves.count);
         self.sum(p, clamp.full, clamp.partial, true)
     }
 }
-
-crate::noise::inherent_amplitude_bound!(Fractal<N>, [N]);
 
 impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Fractal<N> {
     #[inline]

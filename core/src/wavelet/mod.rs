@@ -12,7 +12,7 @@
 //! | [`QuantizedTile2`], [`QuantizedTile3`]: `i16` tiles | | `quantized.rs` |
 //! | [`TILE2`], [`TILE3`], [`TILE2_I16`], [`TILE3_I16`]: the default tiles | | `defaults.rs` |
 //! | [`Wavelet`]: one band, 2D or 3D, tile orientations | §3.6, §4.3, App. 2 | `band.rs` |
-//! | [`Wavelet::sample_projected`]: 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
+//! | [`Wavelet`] as a [`ProjectedNoise`](crate::ProjectedNoise): 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
 //! | [`Multiband`], [`Bands`]: `Σ w_b N(2^b x)`, variance 1, Gaussian or uniform | eq. 1, §4.2 | `multiband.rs` |
 //! | [`erf`] | §4.2 | `erf.rs` |
 //!

@@ -18,7 +18,7 @@
 
 use heapless::Vec;
 
-use crate::{Error, Noise, Real};
+use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet};
 use super::erf::erf;
@@ -307,28 +307,34 @@ impl<'t, T> Multiband<'t, T> {
 }
 
 impl<T: TileData<3>> Multiband<'_, T> {
-    /// Multiband noise projected onto the surface through `p` with normal `normal` (§3.7): each
-    /// band is [`Wavelet::sample_projected`], normalised with the tile's variance times the
-    /// projected-to-3D ratio.
-    ///
-    /// # Contract
-    ///
-    /// Never panics; coordinates as [`sample`](Noise::sample) (a NaN or ±∞ coordinate is 0),
-    /// normals as [`Wavelet::sample_projected`] ([`unit_normal`](super::unit_normal)). The
-    /// result is finite and within [`projected_bound`](Self::projected_bound) (within `[-1, 1]`
-    /// for [`Distribution::Uniform`]); 0 when every band weight is 0.
-    #[must_use]
-    pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
-        let n = super::projected::unit_normal(normal);
-        self.sum(p, 2, |q| self.band.sample_projected_unit(q, n))
-    }
-
     /// A bound on `|sample_projected|`. The projected basis weights sum to 2 for an axis-aligned
     /// normal and stay below 3 for any normal (measured in `tests/tests/wavelet.rs`), so this is
     /// `3 · max |n_c|` per unit of normalised weight.
     #[must_use]
     pub fn projected_bound(&self) -> f32 {
         self.bound(2, 3.0 * self.band.tile().max_abs())
+    }
+}
+
+impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
+    /// Multiband noise projected onto the surface through `p` with normal `normal` (§3.7): each
+    /// band is [`Wavelet::sample_projected`](ProjectedNoise::sample_projected), normalised with
+    /// the tile's variance times the projected-to-3D ratio.
+    ///
+    /// # Contract
+    ///
+    /// Never panics; coordinates as [`sample`](Noise::sample) (a NaN or ±∞ coordinate is 0),
+    /// normals as [`unit_normal`](super::unit_normal). The result is finite and within
+    /// [`projected_bound`](Multiband::projected_bound) (within `[-1, 1]` for
+    /// [`Distribution::Uniform`]); 0 when every band weight is 0.
+    #[inline]
+    fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R {
+        let n = super::projected::unit_normal(normal);
+        self.sum(p, 2, |q| self.band.sample_projected_unit(q, n))
+    }
+
+    fn projected_bound(&self) -> f32 {
+        Multiband::projected_bound(self)
     }
 }
 

@@ -9,7 +9,7 @@
 //! `β(z) ≈ B((z + 3/2)/2)` of the exact quintic projection kernel: double width along the
 //! normal, unchanged across it.
 
-use crate::Real;
+use crate::{ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet, block_variant, orient};
 
@@ -72,13 +72,7 @@ pub fn unit_normal<R: Real>(n: [R; 3]) -> [R; 3] {
     scaled.map(|x| x.div(len).clamp_to(-R::ONE, R::ONE))
 }
 
-/// Block orientations for the up to 3 blocks per axis that a projected sample touches.
-struct Variants {
-    base: [i32; 3],
-    cache: [[[Option<u32>; 3]; 3]; 3],
-}
-
-impl<T: TileData<3>> Wavelet<'_, T> {
+impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
     /// The band projected onto the surface through `p` with normal `normal` (see
     /// [`unit_normal`] for non-unit, zero and non-finite normals).
     ///
@@ -97,7 +91,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// # Examples
     ///
     /// ```
-    /// use bandnoise::wavelet::{Tile3, Wavelet};
+    /// use bandnoise::{ProjectedNoise, wavelet::{Tile3, Wavelet}};
     ///
     /// static TILE: Tile3<16> = Tile3::generate(1);
     /// let band = Wavelet::new(0, &TILE);
@@ -105,13 +99,33 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// // Non-unit normals are normalised.
     /// assert_eq!(up, band.sample_projected([0.3, 0.6, 2.0], [0.0, 0.0, 5.0]));
     /// ```
-    #[must_use]
-    pub fn sample_projected<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
+    #[inline]
+    fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R {
         self.sample_projected_unit(p, unit_normal(normal))
     }
 
-    /// [`sample_projected`](Self::sample_projected) with a normal that [`unit_normal`] already
-    /// returned (multiband noise normalises once for all its bands).
+    fn projected_bound(&self) -> f32 {
+        Wavelet::projected_bound(self)
+    }
+}
+
+/// Block orientations for the up to 3 blocks per axis that a projected sample touches.
+struct Variants {
+    base: [i32; 3],
+    cache: [[[Option<u32>; 3]; 3]; 3],
+}
+
+impl<T: TileData<3>> Wavelet<'_, T> {
+    /// A bound on `|sample_projected|`: three times the tile's largest coefficient (the
+    /// projected basis weights sum to 2 along an axis-aligned normal and stay below 3 for any
+    /// normal, measured by the fuzz target `wavelet`), plus rounding.
+    #[must_use]
+    pub fn projected_bound(&self) -> f32 {
+        3.0 * crate::Noise::<f32, 3>::amplitude_bound(self)
+    }
+
+    /// [`sample_projected`](ProjectedNoise::sample_projected) with a normal that
+    /// [`unit_normal`] already returned (multiband noise normalises once for all its bands).
     pub(crate) fn sample_projected_unit<R: Real>(&self, p: [R; 3], nrm: [R; 3]) -> R {
         let n = T::SIZE as i32;
         let half = R::from_ratio(1, 1);

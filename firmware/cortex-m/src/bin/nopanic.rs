@@ -16,7 +16,7 @@ use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, Value
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
 };
-use bandnoise::{I16F16, Noise, NoiseGradient, Real};
+use bandnoise::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
 use cortex_m as _;
 use cortex_m_rt::entry;
 
