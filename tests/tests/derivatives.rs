@@ -1,6 +1,7 @@
 //! Analytic gradients against central differences, and the value they return against `sample`.
 
 use bandnoise::prelude::*;
+use bandnoise::wavelet::Tiling;
 use bandnoise_tests::{Lattice, Rng};
 
 /// Step of the central differences: small enough that the truncation error `h²/6·|n'''|` stays
@@ -92,4 +93,121 @@ fn fixed_point_gradients_follow_f32() {
     }
     println!("max |I16F16 − f32| of 3D gradients: {worst:.2e}");
     assert!(worst <= 1.0 / 512.0);
+}
+
+/// Central difference of `f` along each axis, in f64 with a step of 1e-6.
+fn central<const D: usize>(f: impl Fn([f64; D]) -> f64, p: [f64; D]) -> [f64; D] {
+    const STEP: f64 = 1e-6;
+    core::array::from_fn(|a| {
+        let (mut hi, mut lo) = (p, p);
+        hi[a] += STEP;
+        lo[a] -= STEP;
+        (f(hi) - f(lo)) / (hi[a] - lo[a])
+    })
+}
+
+/// Value noise (plain and periodic) and fractal sums of every kind have analytic gradients
+/// equal to central differences, and values equal to `sample`. Fractal sums of `|n|` have kinks
+/// where an octave's noise is 0 (and ridged ones where a weight reaches its clamp): points whose
+/// central difference straddles one are skipped, octave by octave.
+#[test]
+fn value_noise_and_fractal_gradients_match_central_differences() {
+    let mut rng = Rng::from_env(170);
+    let value = ValueNoise::new(3);
+    let periodic = bandnoise::lattice::Periodic::new(ValueNoise::new(3), [5, 7, 3]).unwrap();
+    let perlin = Perlin::new(3);
+    let octaves = Octaves::new(4, 1.99, 0.5).unwrap();
+    let (mut worst, mut skipped) = (0.0f64, 0usize);
+    for _ in 0..20_000 {
+        let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-50.0, 50.0));
+        let check = |name: &str, (v, g): (f64, [f64; 3]), plain: f64, c: [f64; 3]| {
+            assert_eq!(v.to_bits(), plain.to_bits(), "{name}: value at {p:?}");
+            let err = (0..3).fold(0.0f64, |e, a| e.max((g[a] - c[a]).abs()));
+            assert!(err < 1e-5, "{name} at {p:?}: {g:?} vs {c:?}");
+            err
+        };
+        worst = worst.max(check(
+            "value",
+            value.sample_with_gradient(p),
+            value.sample(p),
+            central(|q| value.sample(q), p),
+        ));
+        worst = worst.max(check(
+            "periodic value",
+            periodic.sample_with_gradient(p),
+            periodic.sample(p),
+            central(|q| periodic.sample(q), p),
+        ));
+        // Each octave's noise and, for ridged sums, twice its term (the next weight).
+        let (mut f, mut w, mut kinked, mut clamped) = (1.0f64, 1.0f64, false, false);
+        for _ in 0..octaves.count() {
+            let n: f64 = perlin.sample(p.map(|x| x * f));
+            kinked |= n.abs() < 1e-4 * f;
+            let r = (1.0 - n.abs()).powi(2) * w;
+            clamped |= (2.0 * r - 1.0).abs() < 1e-4 * f || (2.0 * r).abs() < 1e-4 * f;
+            w = (2.0 * r).clamp(0.0, 1.0);
+            f *= 1.99f32 as f64;
+        }
+        for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
+            if (kind != Kind::Fbm && kinked) || (kind == Kind::Ridged && clamped) {
+                skipped += 1;
+                continue;
+            }
+            let sum = Fractal::new(&perlin, octaves, kind);
+            let name = format!("{kind:?}");
+            worst = worst.max(check(
+                &name,
+                sum.sample_with_gradient(p),
+                sum.sample(p),
+                central(|q| sum.sample(q), p),
+            ));
+        }
+    }
+    println!(
+        "value noise and fractal sums (f64): max |analytic − central difference| = {worst:.2e}; {skipped} kinked samples skipped"
+    );
+}
+
+/// Wavelet bands (2D, 3D, both tilings) have analytic gradients equal to central differences
+/// (a band is C¹, so a central difference straddling a coefficient boundary is off by at most
+/// step × the jump of the second derivative: far below the tolerance), and values equal to
+/// `sample`, bit for bit.
+#[test]
+fn wavelet_gradients_match_central_differences() {
+    let mut rng = Rng::from_env(171);
+    let mut worst = 0.0f64;
+    for tiling in [Tiling::Varied, Tiling::Periodic] {
+        let b2 = Wavelet::new(5, &TILE2).with_tiling(tiling);
+        let b3 = Wavelet::new(5, &TILE3).with_tiling(tiling);
+        for _ in 0..10_000 {
+            let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-300.0, 300.0));
+            let (v, g) = b3.sample_with_gradient(p);
+            let plain: f64 = b3.sample(p);
+            assert_eq!(v.to_bits(), plain.to_bits(), "3D value at {p:?}");
+            let c = central(|q| b3.sample(q), p);
+            let q = [p[0], p[1]];
+            let (v2, g2) = b2.sample_with_gradient(q);
+            let plain2: f64 = b2.sample(q);
+            assert_eq!(v2.to_bits(), plain2.to_bits(), "2D value at {q:?}");
+            let c2 = central(|r| b2.sample(r), q);
+            for (a, b) in g.iter().zip(c).chain(g2.iter().zip(c2)) {
+                worst = worst.max((a - b).abs());
+                assert!((a - b).abs() < 1e-5, "{tiling:?} at {p:?}: {a} vs {b}");
+            }
+        }
+    }
+    println!("wavelet bands (f64): max |analytic − central difference| = {worst:.2e}");
+    // Fixed point follows f32.
+    let b = Wavelet::new(5, &TILE3);
+    let mut worst_fixed = 0.0f64;
+    for _ in 0..10_000 {
+        let p: [I16F16; 3] = rng.exact_point(200);
+        let (_, gq) = b.sample_with_gradient(p);
+        let (_, gf) = b.sample_with_gradient(p.map(|x| x.to_num::<f32>()));
+        for (q, f) in gq.iter().zip(gf) {
+            worst_fixed = worst_fixed.max((q.to_num::<f64>() - f as f64).abs());
+        }
+    }
+    println!("wavelet 3D gradient: max |I16F16 − f32| = {worst_fixed:.2e}");
+    assert!(worst_fixed < 2e-3);
 }

@@ -147,4 +147,13 @@ impl<R: crate::Real, const D: usize> crate::Noise<R, D> for Periodic<ValueNoise,
     }
 }
 
+impl<R: crate::Real, const D: usize> crate::NoiseGradient<R, D> for Periodic<ValueNoise, D> {
+    #[inline]
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        self.noise.sample_corners_with_gradient(p, |cell| {
+            self.noise.corner_hashes_wrapped(cell, &self.wrap)
+        })
+    }
+}
+
 crate::noise::inherent_amplitude_bound!(Periodic<N, P>, [N, const P: usize]);

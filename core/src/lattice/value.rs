@@ -5,13 +5,15 @@
 //! and visible grid structure (Lewis 1989 §2; Olano 2005 §2). It is here as the baseline the
 //! better noises are compared against.
 
-use super::kernel::{Fade, MAX_CORNERS, Quintic, fade_all, interpolate, split_point};
+use super::kernel::{
+    Fade, MAX_CORNERS, Quintic, fade_all, interpolate, interpolate_with_gradient, split_point,
+};
 use super::periodic::WrapCorners;
 use super::{interpolate_lanes, split_lanes};
 use crate::batch::{LANES, lane};
 use crate::hash::Permutation;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
-use crate::{Noise, Real};
+use crate::{Noise, NoiseGradient, Real};
 
 /// Value noise in 1 to 4 dimensions.
 ///
@@ -76,6 +78,26 @@ impl ValueNoise {
         interpolate(v, &fade_all::<Quintic, R, D>(f)).canonical()
     }
 
+    /// [`sample_corners`](Self::sample_corners) and its analytic gradient: the lattice values
+    /// are constants, so `∂n/∂x_a = Σ_c ∂W_c/∂x_a v_c` (the fade's derivative). The value is the
+    /// same expression as `sample_corners`'.
+    #[inline]
+    pub(super) fn sample_corners_with_gradient<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
+    ) -> (R, [R; D]) {
+        let (cell, f) = split_point(p);
+        let h = corners(cell);
+        let mut v = [R::ZERO; MAX_CORNERS];
+        for m in 0..(1 << D) {
+            v[m] = R::from_ratio(2 * h[m] as i32 - 255, 8);
+        }
+        let s = fade_all::<Quintic, R, D>(f);
+        let ds = f.map(Quintic::fade_derivative);
+        interpolate_with_gradient(v, &[[R::ZERO; D]; MAX_CORNERS], &s, &ds)
+    }
+
     /// [`sample_corners`](Self::sample_corners) over [`LANES`] points, bit-identical to it.
     #[inline]
     #[allow(
@@ -114,6 +136,13 @@ impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
     #[inline]
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         self.sample_corners_lanes(p, out, |cell| self.corners(cell));
+    }
+}
+
+impl<R: Real, const D: usize> NoiseGradient<R, D> for ValueNoise {
+    #[inline]
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        self.sample_corners_with_gradient(p, |cell| self.corners(cell))
     }
 }
 

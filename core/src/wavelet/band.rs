@@ -162,18 +162,38 @@ impl<'t, T> Wavelet<'t, T> {
 /// weights `((1−f)²/2, 1 − …, f²/2)`, with `f` the fraction of `x − ½` (Appendix 2).
 #[inline]
 pub(crate) fn bspline3<R: Real>(x: R) -> (i32, [R; 3]) {
+    let (first, f) = bspline3_fraction(x);
+    (first, bspline3_weights(f))
+}
+
+/// The first coefficient and the fraction `f` of `x − ½` behind [`bspline3`].
+#[inline]
+fn bspline3_fraction<R: Real>(x: R) -> (i32, R) {
     let half = R::from_ratio(1, 1);
     let (cell, frac) = x.split();
     // x − ½ without computing it (it could overflow fixed point at its minimum).
-    let (first, f) = if frac >= half {
+    if frac >= half {
         (cell, frac - half)
     } else {
         (cell.wrapping_sub(1), frac + half)
-    };
+    }
+}
+
+/// The three weights at fraction `f`.
+#[inline]
+fn bspline3_weights<R: Real>(f: R) -> [R; 3] {
+    let half = R::from_ratio(1, 1);
     let g = R::ONE - f;
     let w0 = g.mul_rn(g).mul_rn(half);
     let w2 = f.mul_rn(f).mul_rn(half);
-    (first, [w0, R::ONE - w0 - w2, w2])
+    [w0, R::ONE - w0 - w2, w2]
+}
+
+/// The weights' derivatives along the axis: `(−(1−f), (1−f) − f, f)`.
+#[inline]
+fn bspline3_derivatives<R: Real>(f: R) -> [R; 3] {
+    let g = R::ONE - f;
+    [-g, g - f, f]
 }
 
 /// The orientation of a block of the coefficient grid: 48 in 3D, 8 in 2D.
@@ -241,26 +261,74 @@ fn axis_map<const D: usize>(v: u32, a: usize) -> (usize, bool) {
 
 impl<'t, T> Wavelet<'t, T> {
     /// `Σ_c w(c) n_c` over the 3ᵈ coefficients around `p`.
-    ///
-    /// For each block the 3ᵈ coefficients touch (usually one; at most 2ᵈ), the block's
-    /// orientation is resolved once into per-axis offsets of the tile's flat index, so each
-    /// coefficient costs D additions and a load.
     #[inline]
     fn evaluate<R: Real, const D: usize>(&self, p: [R; D]) -> R
     where
         T: TileData<D>,
     {
+        let mut first = [0i32; D];
+        let mut weights = [[[R::ZERO; 1]; 3]; D];
+        for a in 0..D {
+            let (c, w) = bspline3(p[a]);
+            first[a] = c;
+            weights[a] = w.map(|wj| [wj]);
+        }
+        let [v] = self.block_sums(first, &[weights]);
+        v.canonical()
+    }
+
+    /// [`evaluate`](Self::evaluate) and its gradient: set 0 of the block sums takes the
+    /// weights, set `1 + a` takes axis `a`'s weights replaced by their derivatives.
+    #[inline]
+    fn evaluate_with_gradient<R: Real, const D: usize>(&self, p: [R; D]) -> (R, [R; D])
+    where
+        T: TileData<D>,
+    {
+        let mut first = [0i32; D];
+        let mut weights = [[[R::ZERO; 1]; 3]; D];
+        let mut derivatives = [[[R::ZERO; 1]; 3]; D];
+        for a in 0..D {
+            let (c, f) = bspline3_fraction(p[a]);
+            first[a] = c;
+            weights[a] = bspline3_weights(f).map(|wj| [wj]);
+            derivatives[a] = bspline3_derivatives(f).map(|dj| [dj]);
+        }
+        // Sets for up to 3 axes (a 2D band leaves the last one unused).
+        let sets: [[[[R; 1]; 3]; D]; 4] = core::array::from_fn(|k| {
+            let mut w = weights;
+            if k >= 1 && k <= D {
+                w[k - 1] = derivatives[k - 1];
+            }
+            w
+        });
+        let sums = self.block_sums(first, &sets);
+        let gradient = core::array::from_fn(|a| sums[a + 1].canonical());
+        (sums[0].canonical(), gradient)
+    }
+
+    /// `K` sums `Σ_c w_k(c) n_c` over the 3ᵈ coefficients from `first` along each axis, one per
+    /// set of weights.
+    ///
+    /// For each block the 3ᵈ coefficients touch (usually one; at most 2ᵈ), the block's
+    /// orientation is resolved once into per-axis offsets of the tile's flat index, so each
+    /// coefficient costs D additions and a load.
+    #[inline]
+    fn block_sums<R: Real, const D: usize, const K: usize>(
+        &self,
+        first: [i32; D],
+        sets: &[[[[R; 1]; 3]; D]; K],
+    ) -> [R; K]
+    where
+        T: TileData<D>,
+    {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
         let n = T::SIZE;
-        let mut weights = [[R::ZERO; 3]; D];
         let mut block = [0i32; D];
         let mut local0 = [0usize; D];
         let mut crossing = 0usize; // axes whose three coefficients reach the next block
         for a in 0..D {
-            let (first, w) = bspline3(p[a]);
-            weights[a] = w;
-            block[a] = first.div_euclid(n as i32);
-            local0[a] = first.rem_euclid(n as i32) as usize;
+            block[a] = first[a].div_euclid(n as i32);
+            local0[a] = first[a].rem_euclid(n as i32) as usize;
             if local0[a] + 2 >= n {
                 crossing |= 1 << a;
             }
@@ -302,21 +370,22 @@ impl<'t, T> Wavelet<'t, T> {
         }
         // Sum block by block: each block's coefficients form a separable sub-range. The
         // summing is `add_block` with one lane, so the batch path shares it.
-        let weights = weights.map(|w| w.map(|wj| [wj]));
-        let mut sum = [R::ZERO];
+        let mut sums = [[R::ZERO]; K];
         let mut m = crossing;
         loop {
             let off = axis_offsets(variant(m)).map(|o| o.map(|oj| [oj]));
             // Coefficient j along axis a belongs to this block when it is on the block's side
             // of the split (loops run over 0..3 so every index is provably in range).
             let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
-            self.add_block(&mut sum, &weights, &off, mine);
+            for (sum, weights) in sums.iter_mut().zip(sets) {
+                self.add_block(sum, weights, &off, mine);
+            }
             if m == 0 {
                 break;
             }
             m = (m - 1) & crossing; // the next subset of the crossing axes
         }
-        sum[0].canonical()
+        sums.map(|[s]| s)
     }
 }
 
@@ -459,6 +528,16 @@ impl<T> Wavelet<'_, T> {
 }
 
 crate::noise::inherent_amplitude_bound!(Wavelet<'_, T>, [T]);
+
+/// The analytic gradient: each axis's quadratic B-spline weights differentiated, `(−(1−f),
+/// (1−f) − f, f)` for the fraction `f` (a band is C¹: its gradient is continuous, its second
+/// derivative jumps at coefficient half-integers).
+impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Wavelet<'_, T> {
+    #[inline]
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        self.evaluate_with_gradient(p)
+    }
+}
 
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
     #[inline]
