@@ -211,3 +211,35 @@ fn wavelet_gradients_match_central_differences() {
     println!("wavelet 3D gradient: max |I16F16 − f32| = {worst_fixed:.2e}");
     assert!(worst_fixed < 2e-3);
 }
+
+/// Multiband noise (both distributions, bands below and above band 0) has analytic gradients
+/// equal to central differences, and values equal to `sample`. The uniform distribution's `erf`
+/// is a C¹ cubic Hermite interpolant, so its gradient is that of the function computed.
+#[test]
+fn multiband_gradients_match_central_differences() {
+    let mut rng = Rng::from_env(172);
+    let mut worst = 0.0f64;
+    for distribution in [Distribution::Gaussian, Distribution::Uniform] {
+        for bands in [Bands::default(), Bands::new(-3, &[1.0, 0.7, 0.3]).unwrap()] {
+            let m2 = Multiband::new(4, &TILE2, bands.clone(), distribution);
+            let m3 = Multiband::new(4, &TILE3, bands.clone(), distribution);
+            for _ in 0..3000 {
+                let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0));
+                let (v, g) = m3.sample_with_gradient(p);
+                assert_eq!(v.to_bits(), m3.sample(p).to_bits());
+                let c = central(|q| m3.sample(q), p);
+                let q = [p[0], p[1]];
+                let (v2, g2) = m2.sample_with_gradient(q);
+                assert_eq!(v2.to_bits(), m2.sample(q).to_bits());
+                let c2 = central(|r| m2.sample(r), q);
+                for (a, b) in g.iter().zip(c).chain(g2.iter().zip(c2)) {
+                    // Relative to the gradient's size: the highest band's frequency is 2^5.
+                    let err = (a - b).abs() / b.abs().max(1.0);
+                    worst = worst.max(err);
+                    assert!(err < 1e-4, "{distribution:?} at {p:?}: {a} vs {b}");
+                }
+            }
+        }
+    }
+    println!("multiband (f64): max relative |analytic − central difference| = {worst:.2e}");
+}

@@ -21,7 +21,7 @@ use heapless::Vec;
 use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet};
-use super::erf::erf;
+use super::erf::erf_with_derivative;
 
 /// Average variance of one 2D band over many tiles (measured: 24 tiles of 64²; the paper gives
 /// 0.265).
@@ -267,7 +267,22 @@ impl<'t, T> Multiband<'t, T> {
     /// `offset_b`, as the [`Noise`] contract's "NaN and ±∞ are 0" asks. (An overflowing float
     /// is a multiple of 2³² anyway, whose cell wraps to 0.)
     fn sum<R: Real, const D: usize>(&self, p: [R; D], which: usize, f: impl Fn([R; D]) -> R) -> R {
+        self.sum_with_gradient(p, which, |q| (f(q), [R::ZERO; D])).0
+    }
+
+    /// [`sum`](Self::sum) and its gradient, from each band's value and gradient `f(q)`: band
+    /// `b` samples at `2^(b+1)·p + offset_b`, so its gradient counts `2^(b+1)` times; the
+    /// uniform distribution multiplies by the derivative of its `erf`. The value is `sum`'s,
+    /// bit for bit (`sum` is this with the gradients unused).
+    #[inline]
+    fn sum_with_gradient<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        which: usize,
+        f: impl Fn([R; D]) -> (R, [R; D]),
+    ) -> (R, [R; D]) {
         let mut sum = R::ZERO;
+        let mut gradient = [R::ZERO; D];
         for (i, w) in self.scaled.iter().enumerate() {
             if w[which] == 0.0 {
                 continue;
@@ -284,12 +299,23 @@ impl<'t, T> Multiband<'t, T> {
                     .finite_or_zero()
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
-            sum = sum.saturating_add(R::from_f32(w[which]).mul_rn(f(q)));
+            let weight = R::from_f32(w[which]);
+            let (v, g) = f(q);
+            sum = sum.saturating_add(weight.mul_rn(v));
+            for (ga, gb) in gradient.iter_mut().zip(g) {
+                *ga = ga.saturating_add(weight.mul_rn(gb).saturating_mul(scale));
+            }
         }
         match self.distribution {
-            Distribution::Gaussian => sum.canonical(),
+            Distribution::Gaussian => (sum.canonical(), gradient.map(R::canonical)),
             Distribution::Uniform => {
-                erf(sum.mul_rn(R::from_f32(core::f32::consts::FRAC_1_SQRT_2))).canonical()
+                let c = R::from_f32(core::f32::consts::FRAC_1_SQRT_2);
+                let (u, du) = erf_with_derivative(sum.mul_rn(c));
+                let chain = du.mul_rn(c);
+                (
+                    u.canonical(),
+                    gradient.map(|g| g.saturating_mul(chain).canonical()),
+                )
             }
         }
     }
@@ -339,6 +365,17 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
 }
 
 crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
+
+/// The analytic gradient: the bands' gradients, each times its frequency `2^(b+1)`, and for
+/// [`Distribution::Uniform`] times the derivative of the interpolated `erf` that maps the sum.
+impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Multiband<'_, T> {
+    #[inline]
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        self.sum_with_gradient(p, D - 2, |q| {
+            crate::NoiseGradient::<R, D>::sample_with_gradient(&self.band, q)
+        })
+    }
+}
 
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     #[inline]
