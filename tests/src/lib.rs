@@ -149,24 +149,17 @@ where
     }
 }
 
-impl Lattice {
-    /// Value and analytic gradient, for the gradient noises (`None` for value noise).
-    pub fn sample_with_gradient<R: Real, const D: usize>(&self, p: [R; D]) -> Option<(R, [R; D])>
-    where
-        Perlin: NoiseGradient<R, D>,
-        OriginalPerlin: NoiseGradient<R, D>,
-        CNoise: NoiseGradient<R, D>,
-        MNoise<61>: NoiseGradient<R, D>,
-        MNoise<4093>: NoiseGradient<R, D>,
-    {
-        match self {
-            Lattice::Perlin(n) => Some(n.sample_with_gradient(p)),
-            Lattice::Original(n) => Some(n.sample_with_gradient(p)),
-            Lattice::Value(_) => None,
-            Lattice::C(n) => Some(n.sample_with_gradient(p)),
-            Lattice::M61(n) => Some(n.sample_with_gradient(p)),
-            Lattice::M4093(n) => Some(n.sample_with_gradient(p)),
-        }
+impl<R: Real, const D: usize> NoiseGradient<R, D> for Lattice
+where
+    Perlin: NoiseGradient<R, D>,
+    OriginalPerlin: NoiseGradient<R, D>,
+    ValueNoise: NoiseGradient<R, D>,
+    CNoise: NoiseGradient<R, D>,
+    MNoise<61>: NoiseGradient<R, D>,
+    MNoise<4093>: NoiseGradient<R, D>,
+{
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        delegate!(self, n => n.sample_with_gradient(p))
     }
 }
 

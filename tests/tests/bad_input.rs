@@ -117,14 +117,12 @@ fn gradients_of_bad_input_are_finite() {
             f32::from_bits(1),
             -2_147_483_648.0,
         ] {
-            let (v, g) = noise.sample_with_gradient([special, 0.5, 0.25]).unwrap();
+            let (v, g) = noise.sample_with_gradient([special, 0.5, 0.25]);
             assert!(
                 v.is_finite() && g.iter().all(|d| d.is_finite()),
                 "{name} {special:e}"
             );
-            let (v, g) = noise
-                .sample_with_gradient([I16F16::MAX, I16F16::MIN, I16F16::DELTA])
-                .unwrap();
+            let (v, g) = noise.sample_with_gradient([I16F16::MAX, I16F16::MIN, I16F16::DELTA]);
             assert!(
                 v.abs() <= I16F16::from_num(2) && g.iter().all(|d| d.abs() < 64),
                 "{name}"

@@ -9,8 +9,9 @@
 //! * a NaN, ±∞ or −0.0 coordinate samples 0 along its axis, bit for bit;
 //! * `fill_points` (hence `sample_lanes`) and `fill_grid` (with a bad origin or step) equal
 //!   `sample` at each point, bit for bit;
-//! * `sample_with_gradient` gives `sample`'s value and a finite gradient, the origin's for a
-//!   NaN, ±∞ or −0.0 coordinate;
+//! * `sample_with_gradient` (every lattice and periodic noise, fractal sums, wavelet bands,
+//!   multiband noise) gives `sample`'s value and a finite gradient, the origin's for a NaN, ±∞
+//!   or −0.0 coordinate;
 //! * `Fractal::sample_filtered` is symmetric in its two footprints, whatever they hold;
 //! * projection normalises any finite non-zero normal: a power-of-two multiple of a normal
 //!   (2¹⁰⁰ or 2⁻¹⁰⁰ times, 2¹⁴ in fixed point) gives the same unit normal and sample, bit for bit.
@@ -267,16 +268,10 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_noise::<R, 2, _>(name, &n, rng);
         sweep_noise::<R, 3, _>(name, &n, rng);
         sweep_noise::<R, 4, _>(name, &n, rng);
-        if n.sample_with_gradient([R::ZERO]).is_some() {
-            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
-            sweep_gradient::<R, 1, _>(name, &n, g, rng);
-            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
-            sweep_gradient::<R, 2, _>(name, &n, g, rng);
-            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
-            sweep_gradient::<R, 3, _>(name, &n, g, rng);
-            let g = |p| n.sample_with_gradient(p).expect("a gradient noise");
-            sweep_gradient::<R, 4, _>(name, &n, g, rng);
-        }
+        sweep_gradient::<R, 1, _>(name, &n, |p| n.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 2, _>(name, &n, |p| n.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(name, &n, |p| n.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 4, _>(name, &n, |p| n.sample_with_gradient(p), rng);
     }
 
     // Periodic lattice noise: periods short, odd, natural and beyond the hash's own.
@@ -301,6 +296,7 @@ fn every_noise<R: Special>(rng: &mut Rng) {
     sweep_noise::<R, 3, _>("periodic cnoise", &c, rng);
     let v = Periodic::new(ValueNoise::new(3), [17, 4]).expect("valid");
     sweep_noise::<R, 2, _>("periodic value", &v, rng);
+    sweep_gradient::<R, 2, _>("periodic value", &v, |p| v.sample_with_gradient(p), rng);
 
     // Fractal sums of every kind, plain and filtered.
     for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {
@@ -312,13 +308,21 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_noise::<R, 4, _>(name, &f, rng);
         sweep_filtered::<R, 2, _>(name, &f, rng);
         sweep_filtered::<R, 3, _>(name, &f, rng);
+        sweep_gradient::<R, 2, _>(name, &f, |p| f.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(name, &f, |p| f.sample_with_gradient(p), rng);
     }
 
     // Wavelet bands over the default tiles, in both tilings, and the quantized tiles.
     for tiling in [Tiling::Varied, Tiling::Periodic] {
         let name = &format!("wavelet {tiling:?}");
-        sweep_noise::<R, 2, _>(name, &Wavelet::new(6, &TILE2).with_tiling(tiling), rng);
-        sweep_noise::<R, 3, _>(name, &Wavelet::new(6, &TILE3).with_tiling(tiling), rng);
+        let (b2, b3) = (
+            Wavelet::new(6, &TILE2).with_tiling(tiling),
+            Wavelet::new(6, &TILE3).with_tiling(tiling),
+        );
+        sweep_noise::<R, 2, _>(name, &b2, rng);
+        sweep_noise::<R, 3, _>(name, &b3, rng);
+        sweep_gradient::<R, 2, _>(name, &b2, |p| b2.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(name, &b3, |p| b3.sample_with_gradient(p), rng);
     }
     sweep_noise::<R, 2, _>("wavelet i16", &Wavelet::new(6, &TILE2_I16), rng);
     sweep_noise::<R, 3, _>("wavelet i16", &Wavelet::new(6, &TILE3_I16), rng);
@@ -344,6 +348,8 @@ fn every_noise<R: Special>(rng: &mut Rng) {
             let m3 = Multiband::new(8, &TILE3, bands.clone(), distribution);
             sweep_noise::<R, 2, _>(name, &m2, rng);
             sweep_noise::<R, 3, _>(name, &m3, rng);
+            sweep_gradient::<R, 2, _>(name, &m2, |p| m2.sample_with_gradient(p), rng);
+            sweep_gradient::<R, 3, _>(name, &m3, |p| m3.sample_with_gradient(p), rng);
             let b = m3.projected_bound();
             sweep_projected::<R>(name, |p, n| m3.sample_projected(p, n), b, rng);
         }

@@ -48,15 +48,19 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         let f = Fractal::new(Perlin::new(3), o, kind);
         add(f.sample([p[0], p[1], p[2]]));
         add(f.sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[2]]));
+        add(f.sample_with_gradient([p[0], p[1], p[2]]).1[2]);
     }
     add(Wavelet::new(4, &TILE2_I16).sample([p[0], p[1]]));
     let w3 = Wavelet::new(4, &TILE3_I16);
     add(w3.sample([p[0], p[1], p[2]]));
     add(w3.sample_projected([p[0], p[1], p[2]], [p[3], p[2], p[1]]));
+    add(w3.sample_with_gradient([p[0], p[1], p[2]]).1[1]);
+    add(ValueNoise::new(2).sample_with_gradient([p[0], p[3]]).1[0]);
     if let Ok(b) = Bands::new(black_box(-2), black_box(&[0.5f32, 1.0, 0.25][..])) {
         let m = Multiband::new(5, &TILE3_I16, b, black_box(Distribution::Uniform));
         add(m.sample([p[0], p[1], p[2]]));
         add(m.sample_projected([p[0], p[1], p[2]], [p[1], p[0], p[3]]));
+        add(m.sample_with_gradient([p[0], p[1], p[2]]).1[0]);
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
