@@ -11,7 +11,7 @@
 use bandnoise::Noise;
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Octaves};
-use bandnoise::lattice::{MNoise, Perlin, ValueNoise};
+use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 
 /// Samples per row (and rows in the timed grid).
@@ -22,9 +22,11 @@ pub const STEP: f32 = 1.0 / 16.0;
 pub const Z: f32 = 0.37;
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 8] = [
+pub const FUNCTIONS: [&str; 10] = [
     "perlin-2d",
     "perlin-3d",
+    "tabled-perlin-2d",
+    "tabled-perlin-3d",
     "mnoise-2d",
     "mnoise-3d",
     "value-2d",
@@ -118,6 +120,10 @@ pub fn workload(function: &str, implementation: &str) -> Option<Run> {
         ("perlin-2d", "bandnoise-batch") => batch2(Perlin::new(0)),
         ("perlin-3d", "bandnoise") => point3(Perlin::new(0)),
         ("perlin-3d", "bandnoise-batch") => batch3(Perlin::new(0)),
+        ("tabled-perlin-2d", "bandnoise") => point2(TabledPerlin::new(0)),
+        ("tabled-perlin-2d", "bandnoise-batch") => batch2(TabledPerlin::new(0)),
+        ("tabled-perlin-3d", "bandnoise") => point3(TabledPerlin::new(0)),
+        ("tabled-perlin-3d", "bandnoise-batch") => batch3(TabledPerlin::new(0)),
         ("mnoise-2d", "bandnoise") => point2(MNoise::<61>::new(0)),
         ("mnoise-2d", "bandnoise-batch") => batch2(MNoise::<61>::new(0)),
         ("mnoise-3d", "bandnoise") => point3(MNoise::<61>::new(0)),
@@ -205,13 +211,14 @@ pub fn workload(function: &str, implementation: &str) -> Option<Run> {
     Some(run)
 }
 
-/// The function whose fastest peer a bandnoise-only function is compared with: mNoise and
-/// wavelet noise against the peers' Perlin noise of the same dimension.
+/// The function whose fastest peer a bandnoise-only function is compared with: mNoise, wavelet
+/// noise and Perlin noise with its per-seed table (`TabledPerlin`) against the peers' Perlin
+/// noise of the same dimension.
 #[must_use]
 pub fn peer_function(function: &str) -> &str {
     match function {
-        "mnoise-2d" | "wavelet-2d" => "perlin-2d",
-        "mnoise-3d" | "wavelet-3d" => "perlin-3d",
+        "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" => "perlin-2d",
+        "tabled-perlin-3d" | "mnoise-3d" | "wavelet-3d" => "perlin-3d",
         f => f,
     }
 }

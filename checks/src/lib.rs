@@ -12,7 +12,9 @@ pub mod led;
 
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+use bandnoise::lattice::{
+    CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};
 use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 
@@ -20,7 +22,7 @@ use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 pub const POINTS: u32 = 64;
 
 /// The number of checksums [`checksums`] produces.
-pub const COUNT: usize = 2 * (6 * 4 + 9);
+pub const COUNT: usize = 2 * (6 * 4 + 11);
 
 /// Raw bits of a sample, the same for every number type's meaning of "bit-identical".
 pub trait Bits: Real {
@@ -136,6 +138,11 @@ fn all<R: Bits>(out: &mut [u32]) {
         f.add(poisson.as_ref().map_or(u32::MAX, |p| rng.poisson(p)));
     }
     push(f.0);
+    // Perlin with its table: on x86-64 the table's kernel, elsewhere Perlin's, so the host's
+    // expected values check one against the other.
+    let tabled = TabledPerlin::new(1);
+    push(checksum::<R, 2>(&tabled, 200));
+    push(checksum::<R, 3>(&tabled, 200));
 }
 
 /// The name of each checksum, in order.
@@ -174,6 +181,8 @@ pub const NAMES: [&str; COUNT] = {
         "periodic perlin 3D",
         "periodic value 2D",
         "cell hash and generator",
+        "tabled perlin 2D",
+        "tabled perlin 3D",
     ];
     let mut names = [""; COUNT];
     let mut i = 0;

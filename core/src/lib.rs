@@ -45,7 +45,7 @@
 //!
 //! | noise | the seed … | seed 0 |
 //! |---|---|---|
-//! | [`Perlin`](lattice::Perlin), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
+//! | [`Perlin`](lattice::Perlin), [`TabledPerlin`](lattice::TabledPerlin), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
 //! | [`MNoise`](lattice::MNoise) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
 //! | [`Wavelet`](wavelet::Wavelet) | picks each tile-sized block's orientation (48 in 3D, 8 in 2D) by a hash of the block and the seed | one orientation hash like any other |
 //! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
@@ -61,11 +61,13 @@
 //! * `f32` and `f64` results use only IEEE `+ − × ÷` (and `libm` where more is needed), so they
 //!   are bit-identical on every target; fixed point is integer arithmetic and bit-identical
 //!   everywhere. Where a target has a hand-vectorised kernel (Perlin 2D/3D in `f32` on x86-64,
-//!   SSE2), it performs the same operations in the same order: the values are the same.
+//!   SSE2; all of them in one module, chosen by `cfg`), it performs the same operations in the
+//!   same order: the values are the same.
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+mod arch;
 pub mod batch;
 mod error;
 pub mod fractal;
@@ -83,7 +85,9 @@ pub use real::{I16F16, Real};
 pub mod prelude {
     pub use crate::batch::Grid;
     pub use crate::fractal::{Fractal, Kind, Octaves};
-    pub use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+    pub use crate::lattice::{
+        CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+    };
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
 }

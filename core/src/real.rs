@@ -28,6 +28,11 @@ pub(crate) mod sealed {
     use fixed::types::I16F16;
 
     pub trait Sealed: Sized {
+        /// Whether the type is IEEE binary32 (`f32`): the target kernels of
+        /// [`arch`](crate::arch) are written for `f32` lanes, and a noise takes them when this
+        /// constant says its samples are `f32` (then [`Real::to_f32`](crate::Real::to_f32) and
+        /// [`Real::from_f32`](crate::Real::from_f32) are the identity).
+        const BINARY32: bool;
         /// `self · unit` for `unit` ∈ {−1, 0, 1}, exact (up to the sign of a zero), for gradient
         /// components read from a table. Floats multiply where there is an FPU (one instruction
         /// that reads the unit from the table) and flip or clear the sign bits where floats are
@@ -53,8 +58,9 @@ pub(crate) mod sealed {
     ));
 
     macro_rules! mul_unit_float {
-        ($t:ty, $bits:ty) => {
+        ($t:ty, $bits:ty, $binary32:expr) => {
             impl Sealed for $t {
+                const BINARY32: bool = $binary32;
                 #[inline]
                 fn mul_unit(self, unit: Self) -> Self {
                     if SOFT_FLOAT {
@@ -80,9 +86,10 @@ pub(crate) mod sealed {
             }
         };
     }
-    mul_unit_float!(f32, u32);
-    mul_unit_float!(f64, u64);
+    mul_unit_float!(f32, u32, true);
+    mul_unit_float!(f64, u64, false);
     impl Sealed for I16F16 {
+        const BINARY32: bool = false;
         #[inline]
         fn mul_unit(self, unit: Self) -> Self {
             // unit's bits are ±2^16 or 0: `>> 16` gives ±1 or 0. The kernels pass fractions in

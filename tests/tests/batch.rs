@@ -120,6 +120,7 @@ fn lattice_noises_in_batch_equal_point_evaluation() {
 fn check_fractals<R: Real, const D: usize>(rng: &mut Rng)
 where
     Perlin: Noise<R, D>,
+    TabledPerlin: Noise<R, D>,
     MNoise<61>: Noise<R, D>,
 {
     for kind in [Kind::Fbm, Kind::Turbulence, Kind::Ridged] {

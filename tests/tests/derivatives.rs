@@ -12,6 +12,7 @@ fn check<const D: usize>(noise: &Lattice, name: &str, rng: &mut Rng) -> f64
 where
     Lattice: Noise<f32, D>,
     Perlin: NoiseGradient<f32, D>,
+    TabledPerlin: NoiseGradient<f32, D>,
     OriginalPerlin: NoiseGradient<f32, D>,
     CNoise: NoiseGradient<f32, D>,
     MNoise<61>: NoiseGradient<f32, D>,

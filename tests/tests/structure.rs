@@ -152,3 +152,50 @@ fn mnoise_seed_zero_is_olanos_hash_chain() {
         }
     }
 }
+
+/// `Perlin` is its doubled permutation on every target (the x86-64 point kernel's table is
+/// static); `TabledPerlin` adds its per-seed table only where a kernel reads it, and gives
+/// Perlin's values bit for bit on every path.
+#[test]
+fn perlin_has_one_size_and_the_tabled_perlin_its_values() {
+    assert_eq!(size_of::<Perlin>(), 512);
+    let table = if cfg!(target_arch = "x86_64") {
+        16 * 1024
+    } else {
+        0
+    };
+    assert!(size_of::<TabledPerlin>() >= 512 + table);
+    assert!(size_of::<TabledPerlin>() <= 512 + table + 32);
+
+    fn same<const D: usize>(perlin: &Perlin, tabled: &TabledPerlin, rng: &mut Rng)
+    where
+        Perlin: AllTypes<D> + NoiseGradient<f32, D>,
+        TabledPerlin: AllTypes<D> + NoiseGradient<f32, D>,
+    {
+        for _ in 0..20_000 {
+            let p: [f32; D] = core::array::from_fn(|_| rng.f64_in(-300.0, 300.0) as f32);
+            let (a, b): (f32, f32) = (perlin.sample(p), tabled.sample(p));
+            assert_eq!(a.to_bits(), b.to_bits(), "{D}D f32 at {p:?}");
+            let (a, b) = (
+                perlin.sample_with_gradient(p),
+                tabled.sample_with_gradient(p),
+            );
+            assert_eq!(a, b, "{D}D gradient at {p:?}");
+            let q: [I16F16; D] = p.map(I16F16::from_num);
+            let (a, b): (I16F16, I16F16) = (perlin.sample(q), tabled.sample(q));
+            assert_eq!(a, b, "{D}D I16F16 at {p:?}");
+            let r = p.map(f64::from);
+            let (a, b): (f64, f64) = (perlin.sample(r), tabled.sample(r));
+            assert_eq!(a.to_bits(), b.to_bits(), "{D}D f64 at {p:?}");
+        }
+    }
+    let mut rng = Rng::from_env(11);
+    for seed in [0, 1, 0xdead_beef] {
+        let (perlin, tabled) = (Perlin::new(seed), TabledPerlin::new(seed));
+        assert_eq!(tabled.perlin(), &perlin);
+        same::<1>(&perlin, &tabled, &mut rng);
+        same::<2>(&perlin, &tabled, &mut rng);
+        same::<3>(&perlin, &tabled, &mut rng);
+        same::<4>(&perlin, &tabled, &mut rng);
+    }
+}

@@ -4,6 +4,7 @@
 //! | type | paper | hash | gradients | fade |
 //! |---|---|---|---|---|
 //! | [`Perlin`] | Perlin 2002; pbrt §10.6.1 | [`Permutation`](crate::hash::Permutation), x innermost | Perlin's 12 cube edges (+4 repeats) | quintic |
+//! | [`TabledPerlin`] | as [`Perlin`], plus a per-seed table for the point kernel | | | |
 //! | [`OriginalPerlin`] | Perlin 1985 | permutation, x innermost | a table of 256 random unit vectors | cubic |
 //! | [`ValueNoise`] | pbrt §10.6 intro; Lewis 1989 §2 | permutation, x innermost | none: a value in `[-1, 1]` per point | quintic |
 //! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
@@ -33,15 +34,13 @@ mod corner;
 pub(crate) mod kernel;
 mod original;
 mod periodic;
-mod perlin;
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-mod perlin_sse2;
+pub(crate) mod perlin;
 mod value;
 
 pub use corner::{CNoise, MNoise};
 pub use original::OriginalPerlin;
 pub use periodic::Periodic;
-pub use perlin::Perlin;
+pub use perlin::{Perlin, TabledPerlin};
 pub use value::ValueNoise;
 
 use crate::batch::{self, Grid, LANES};

@@ -5,15 +5,14 @@
 //! repeated to make 16) exactly as in Perlin's reference `grad`, so that with seed 0 the f64 noise
 //! reproduces his reference values bit for bit.
 //!
-//! In `f32` on x86-64, 2D and 3D sampling runs an SSE2 version of the same kernel
-//! (`perlin_sse2.rs`) with the same values; see [`Perlin`]'s performance notes.
+//! In `f32`, 2D and 3D sampling runs the target's vector kernel where [`arch`] has
+//! one (x86-64), with the same values; see [`Perlin`]'s performance notes.
 
 use super::kernel::{MAX_CORNERS, Quintic, sum_of_products};
 use super::periodic::WrapCorners;
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-use super::perlin_sse2;
 use super::{GradientLattice, gradient_noise_impls, half_dims, sample_gradient, signed};
 use crate::Real;
+use crate::arch;
 use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
 
 /// Perlin's improved noise in 1 to 4 dimensions.
@@ -25,10 +24,10 @@ use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
 ///   1D uses the 8 slopes `±¼, ±½, ±¾, ±1` from `h & 7`. 4D uses the 32 edges of the
 ///   tesseract (one zero component, three ±1) from `h & 31`.
 /// * **Speed**: in `f32` on x86-64, 2D and 3D `sample` run an SSE2 kernel (same values, bit
-///   for bit): about 70 and 105 instructions per sample. For many samples, the batch API
-///   ([`Noise::fill_grid`](crate::Noise::fill_grid)) is 5–8× faster still.
-/// * **Size**: 512 bytes (the permutation, doubled); on x86-64 16.5 KiB, with the SSE2
-///   kernel's table of gradient pairs. Build it once and share it: sampling takes `&self`.
+///   for bit). For many samples, the batch API ([`Noise::fill_grid`](crate::Noise::fill_grid))
+///   is several times faster still (`bench/README.md`).
+/// * **Size**: 512 bytes on every target (the permutation, doubled), so it is cheap to copy,
+///   but sampling takes `&self`: build it once and share it.
 /// * **Range**: `|n| ≤ D/2` (+2⁻¹⁰ for rounding; module docs of [`lattice`](super)); 0 at
 ///   every lattice point. Measured maxima over 2·10⁶ random points (`tests/tests/statistics.rs`):
 ///   1D 0.500, 2D 0.999, 3D 0.998, 4D 1.118.
@@ -44,46 +43,27 @@ use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
 /// let fixed: I16F16 = p.sample([I16F16::from_num(3.14), I16F16::from_num(42), I16F16::from_num(7)]);
 /// assert!((fixed.to_num::<f64>() - 0.136919958784).abs() < 1e-3);
 /// ```
-#[derive(Clone)]
+#[derive(Clone, PartialEq, Eq)]
 pub struct Perlin {
     /// The seed's [`Permutation`](crate::hash::Permutation) repeated twice, as in Perlin's reference code (`p[i + 256] =
     /// p[i]`): the hash chain's indices `p[x] + y + 1` stay below 512 without a `& 255`.
     p: Doubled,
-    /// The SSE2 kernel's gradients of neighbouring hash values (16 KiB), derived from `p`.
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-    pairs: perlin_sse2::GradientPairs,
 }
-
-/// Two noises are equal when their permutations are (the rest is derived from it).
-impl PartialEq for Perlin {
-    fn eq(&self, other: &Self) -> bool {
-        self.p == other.p
-    }
-}
-
-impl Eq for Perlin {}
 
 impl Perlin {
     /// Improved noise for `seed`; seed 0 is Perlin's reference noise. `const`, so
     /// `static NOISE: Perlin = Perlin::new(7);` builds the table at compile time.
     #[must_use]
     pub const fn new(seed: u32) -> Self {
-        let p = Doubled::new(seed);
         Self {
-            #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-            pairs: perlin_sse2::GradientPairs::new(&p.0),
-            p,
+            p: Doubled::new(seed),
         }
     }
 
-    /// The SSE2 kernel over this seed's tables.
-    #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
+    /// The doubled permutation, for the target kernels of [`arch`].
     #[inline]
-    pub(super) fn kernel(&self) -> perlin_sse2::Kernel<'_> {
-        perlin_sse2::Kernel {
-            p: &self.p.0,
-            pairs: &self.pairs,
-        }
+    pub(crate) fn doubled(&self) -> &[u8; 512] {
+        &self.p.0
     }
 
     #[inline]
@@ -112,26 +92,16 @@ impl core::fmt::Debug for Perlin {
     }
 }
 
-/// Whether 2D and 3D sampling in `R` take the SSE2 kernel: `f32` on x86-64.
+/// Whether 2D and 3D sampling in `R` take the target's vector kernel: `f32` where
+/// [`arch`] has one (a constant after monomorphisation).
 #[inline]
 fn has_vector_kernel<R: Real>() -> bool {
-    cfg!(all(target_arch = "x86_64", target_feature = "sse2"))
-        && core::any::TypeId::of::<R>() == core::any::TypeId::of::<f32>()
+    arch::PERLIN_POINT && R::BINARY32
 }
 
-/// `f32`, seen as `R`, when `R` is `f32`: the point kernels with a vector version for `f32`
-/// only take it this way (the comparison of type ids is a constant; the conversions are the
-/// identity).
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-#[inline]
-fn as_f32<R: Real, const D: usize>(p: [R; D]) -> Option<[f32; D]> {
-    has_vector_kernel::<R>().then(|| p.map(R::to_f32))
-}
-
-/// The shared kernel in `f32`, for the coordinates the SSE2 kernel leaves to it (beyond ±2³¹,
+/// The shared kernel in `f32`, for the coordinates the vector kernel leaves to it (beyond ±2³¹,
 /// not finite, or a tiny negative whose fraction rounds to 1): out of line, so that the vector
 /// kernel stays small enough to inline.
-#[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 #[cold]
 #[inline(never)]
 fn shared_kernel<const D: usize>(perlin: &Perlin, p: [f32; D]) -> f32
@@ -146,6 +116,147 @@ impl Default for Perlin {
         Self::new(0)
     }
 }
+
+/// [`Perlin`] with a per-seed table for the point kernel: the same noise bit for bit, faster
+/// where the target's vector kernel can use the table, at the cost of its size.
+///
+/// On x86-64, 2D and 3D point sampling in `f32` look up the gradients of two neighbouring
+/// corners in one 16 KiB table (the gradients that Perlin's `grad` picks for `p[b]` and
+/// `p[b + 1]`, for every `b`), one dependent lookup fewer than [`Perlin`], whose kernel first
+/// reads `p[b]` and `p[b + 1]` and then a static row. That makes a point sample about 10%
+/// faster (`bench/README.md`). Other number types, dimensions and targets sample exactly as
+/// [`Perlin`]; there the table is empty.
+///
+/// * **Size**: 16.5 KiB on x86-64, 512 bytes elsewhere. Build it once (`static` works: `new` is
+///   `const`) and share it.
+/// * Everything else (range, gradients, periodic wrapping, batches) is [`Perlin`]'s.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Noise, lattice::{Perlin, TabledPerlin}};
+///
+/// static NOISE: TabledPerlin = TabledPerlin::new(7);
+/// let p = [0.3f32, 4.7, -2.2];
+/// assert_eq!(NOISE.sample(p).to_bits(), Perlin::new(7).sample(p).to_bits());
+/// assert_eq!(NOISE.perlin(), &Perlin::new(7));
+/// ```
+#[derive(Clone)]
+pub struct TabledPerlin {
+    perlin: Perlin,
+    pairs: arch::PerlinPairs,
+}
+
+impl TabledPerlin {
+    /// [`Perlin::new`]`(seed)` with its table.
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        Self::from_perlin(Perlin::new(seed))
+    }
+
+    /// `perlin` with its table.
+    #[must_use]
+    pub const fn from_perlin(perlin: Perlin) -> Self {
+        let pairs = arch::PerlinPairs::new(&perlin.p.0);
+        Self { perlin, pairs }
+    }
+
+    /// The noise without the table.
+    #[must_use]
+    pub const fn perlin(&self) -> &Perlin {
+        &self.perlin
+    }
+}
+
+/// Two noises are equal when their permutations are (the table is derived from it).
+impl PartialEq for TabledPerlin {
+    fn eq(&self, other: &Self) -> bool {
+        self.perlin == other.perlin
+    }
+}
+
+impl Eq for TabledPerlin {}
+
+impl Default for TabledPerlin {
+    fn default() -> Self {
+        Self::new(0)
+    }
+}
+
+impl core::fmt::Debug for TabledPerlin {
+    /// The permutation, once.
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        f.debug_struct("TabledPerlin")
+            .field("perm", &&self.perlin.p.0[..256])
+            .finish()
+    }
+}
+
+/// `TabledPerlin` is `Perlin` in every method but the point kernels of 2D and 3D (`$point`).
+macro_rules! forward_to_perlin {
+    ($d:literal $(, $point:ident)?) => {
+        impl GradientLattice<$d> for TabledPerlin {
+            type Fade = Quintic;
+            #[inline]
+            fn corner_hashes(&self, cell: [i32; $d]) -> [u32; MAX_CORNERS] {
+                self.perlin.corners(cell)
+            }
+            #[inline]
+            fn dot<R: Real>(&self, h: u32, d: &[R; $d]) -> R {
+                GradientLattice::<$d>::dot(&self.perlin, h, d)
+            }
+            #[inline]
+            fn dot_with<R: Real>(&self, g: &[R; $d], d: &[R; $d]) -> R {
+                GradientLattice::<$d>::dot_with(&self.perlin, g, d)
+            }
+            #[inline]
+            fn gradient<R: Real>(&self, h: u32) -> [R; $d] {
+                GradientLattice::<$d>::gradient(&self.perlin, h)
+            }
+            #[inline]
+            fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+                <Perlin as GradientLattice<$d>>::point_kernel_for_scattered_lanes::<R>()
+            }
+            $(
+                #[inline]
+                fn sample_point<R: Real>(&self, p: [R; $d]) -> R {
+                    if has_vector_kernel::<R>() {
+                        let f = p.map(R::to_f32);
+                        let v = $point(&self.perlin, &self.pairs, f);
+                        return R::from_f32(v.unwrap_or_else(|| shared_kernel(&self.perlin, f)));
+                    }
+                    sample_gradient(&self.perlin, p)
+                }
+            )?
+        }
+
+        impl WrapCorners<$d> for TabledPerlin {
+            #[inline]
+            fn corner_hashes_wrapped(&self, cell: [i32; $d], wrap: &Wrap<$d>) -> [u32; MAX_CORNERS] {
+                self.perlin.corner_hashes_wrapped(cell, wrap)
+            }
+        }
+    };
+}
+
+/// The 2D point kernel with the table.
+#[inline]
+fn paired2(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y]: [f32; 2]) -> Option<f32> {
+    arch::perlin2_paired(perlin.doubled(), pairs, x, y)
+}
+
+/// The 3D point kernel with the table.
+#[inline]
+fn paired3(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z]: [f32; 3]) -> Option<f32> {
+    arch::perlin3_paired(perlin.doubled(), pairs, x, y, z)
+}
+
+forward_to_perlin!(1);
+forward_to_perlin!(2, paired2);
+forward_to_perlin!(3, paired3);
+forward_to_perlin!(4);
+gradient_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
+crate::noise::inherent_amplitude_bound!(TabledPerlin, []);
 
 /// Perlin's reference `grad(hash, x, y, z)`, the definition [`GRAD3`] is checked against.
 #[cfg(test)]
@@ -164,7 +275,7 @@ fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
 
 /// The gradient Perlin's reference `grad(hash, x, y, z)` dots with for `hash & 15`: the 12
 /// edges of the cube and 4 of them repeated (checked against `grad3` by a test).
-pub(super) const GRAD3: [[i8; 3]; 16] = [
+pub(crate) const GRAD3: [[i8; 3]; 16] = [
     [1, 1, 0],
     [-1, 1, 0],
     [1, -1, 0],
@@ -232,9 +343,9 @@ impl GradientLattice<2> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 2]) -> R {
-        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-        if let Some([x, y]) = as_f32(p) {
-            let v = self.kernel().sample2(x, y);
+        if has_vector_kernel::<R>() {
+            let [x, y] = p.map(R::to_f32);
+            let v = arch::perlin2(self.doubled(), x, y);
             return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y])));
         }
         sample_gradient(self, p)
@@ -265,9 +376,9 @@ impl GradientLattice<3> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 3]) -> R {
-        #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
-        if let Some([x, y, z]) = as_f32(p) {
-            let v = self.kernel().sample3(x, y, z);
+        if has_vector_kernel::<R>() {
+            let [x, y, z] = p.map(R::to_f32);
+            let v = arch::perlin3(self.doubled(), x, y, z);
             return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y, z])));
         }
         sample_gradient(self, p)

@@ -12,7 +12,9 @@ use core::panic::PanicInfo;
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+use bandnoise::lattice::{
+    CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
 };
@@ -37,6 +39,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         }};
     }
     all_dims!(Perlin::new(black_box(1)));
+    all_dims!(TabledPerlin::new(black_box(1)));
     all_dims!(OriginalPerlin::new(black_box(1)));
     all_dims!(ValueNoise::new(black_box(1)));
     all_dims!(CNoise::new(black_box(1)));

@@ -1,19 +1,21 @@
-//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D and 3D with SSE2
-//! (x86-64), in `f32`: the axes split and faded together, and the 4 (2D) or 8 (3D) corner dot
-//! products and the lerps in 4-lane vectors. The point kernel of [`sample_gradient`] does the
-//! same steps one number at a time.
+//! The x86-64 kernels of [`arch`](super) (SSE2, which every x86-64 processor has).
+//!
+//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D and 3D, in
+//! `f32`: the axes split and faded together, and the 4 (2D) or 8 (3D) corner dot products and
+//! the lerps in 4-lane vectors. The point kernel of [`sample_gradient`] does the same steps one
+//! number at a time.
 //!
 //! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
-//! then a gradient), and every lerp waits for the one before. The last two links of the chain
-//! are one lookup here, in a per-seed table of the gradients of neighbouring hash values
-//! ([`GradientPairs`]), which also hands the gradients over already split by axis.
+//! then a gradient), and every lerp waits for the one before. The gradients of two neighbouring
+//! hash values come from one row of a static table ([`PAIR_ROWS`]), already split by axis, so
+//! the vectors need no transposition.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
 //! bit; a test compares them over random and edge-case points. The intrinsics are the safe
 //! wrappers of `safe_arch`, so the crate keeps `#![forbid(unsafe_code)]`.
 //!
-//! [`sample_gradient`]: super::sample_gradient
+//! [`sample_gradient`]: crate::lattice
 
 use safe_arch::{
     add_i32_m128i, add_m128, add_m128_s, bitor_m128, cast_to_m128_from_m128i,
@@ -25,59 +27,145 @@ use safe_arch::{
     unpack_low_m128, zeroed_m128,
 };
 
-use super::perlin::GRAD3;
+use crate::lattice::perlin::GRAD3;
 
-/// The gradients of every pair of neighbouring hash values, per seed: entry `b` (`b < 512`, an
-/// index of the doubled permutation `p`) holds the gradients of `p[b]` and `p[b + 1]`, the
-/// last step of Perlin's chain for two corners that differ along the innermost hashed axis,
-/// as `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]`. One lookup replaces two permutation
-/// lookups, two gradient lookups and their transposition, and takes a level off the chain of
-/// dependent loads: `p[p[x] + y]` and its neighbour in 2D, `p[p[p[x] + y] + z]` and its
-/// neighbour in 3D. 16 KiB, built by [`Perlin::new`](super::Perlin::new) (at compile time
-/// for a `const` or `static`).
+pub(super) const PERLIN_POINT: bool = true;
+
+#[inline]
+pub(super) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample2(x, y)
+}
+
+#[inline]
+pub(super) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample3(x, y, z)
+}
+
+#[inline]
+pub(super) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
+    Kernel { p, pairs }.sample2(x, y)
+}
+
+#[inline]
+pub(super) fn perlin3_paired(
+    p: &[u8; 512],
+    pairs: &PerlinPairs,
+    x: f32,
+    y: f32,
+    z: f32,
+) -> Option<f32> {
+    Kernel { p, pairs }.sample3(x, y, z)
+}
+
+/// Where the kernel finds the gradients of `p[i]` and `p[i + 1]`, split by axis:
+/// `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]`.
+trait GradientPairs {
+    fn pair(&self, p: &[u8; 512], i: usize) -> &[[f32; 4]; 2];
+}
+
+/// The static table: look up `p[i]` and `p[i + 1]`, then their row.
+impl GradientPairs for PairRows {
+    #[inline]
+    fn pair(&self, p: &[u8; 512], i: usize) -> &[[f32; 4]; 2] {
+        let row = usize::from(p[i] & 15) | usize::from(p[i + 1] & 15) << 4;
+        &self.0[row]
+    }
+}
+
+/// A seed's table, `PAIR_ROWS` composed with the permutation: entry `b` (`b < 512`, an index of
+/// the doubled permutation `p`) is the row of `p[b]` and `p[b + 1]`. One lookup replaces two
+/// permutation lookups and a row lookup, and takes a level off the chain of dependent loads:
+/// `p[p[x] + y]` and its neighbour in 2D, `p[p[p[x] + y] + z]` and its neighbour in 3D.
+/// 16 KiB, built by `const fn`; a caller opts into it with
+/// [`TabledPerlin`](crate::lattice::TabledPerlin).
 #[derive(Clone)]
 #[repr(align(32))]
-pub(super) struct GradientPairs([[[f32; 4]; 2]; 512]);
+pub(crate) struct PerlinPairs([[[f32; 4]; 2]; 512]);
 
-impl GradientPairs {
-    /// The table of the doubled permutation `p`.
-    pub(super) const fn new(p: &[u8; 512]) -> Self {
+impl PerlinPairs {
+    pub(crate) const fn new(p: &[u8; 512]) -> Self {
         let mut pairs = [[[0.0f32; 4]; 2]; 512];
         let mut b = 0;
         while b < 512 {
             // Entry 511 is never read (b ≤ 255 + 255); its p[b + 1] wraps as p does.
-            let g0 = GRAD3[(p[b] & 15) as usize];
-            let g1 = GRAD3[(p[(b + 1) & 511] & 15) as usize];
-            pairs[b] = [
-                [g0[0] as f32, g0[1] as f32, g1[0] as f32, g1[1] as f32],
-                [g0[2] as f32, g1[2] as f32, 0.0, 0.0],
-            ];
+            let row = (p[b] & 15) as usize | ((p[(b + 1) & 511] & 15) as usize) << 4;
+            pairs[b] = PAIR_ROWS.0[row];
             b += 1;
         }
         Self(pairs)
     }
 }
 
-/// The SSE2 kernel over a seed's tables: Perlin's doubled permutation (see
-/// [`Perlin`](super::Perlin)), whose hash chain `p[p[x] + y]` needs no `& 255` (every index it
-/// forms is at most 255 + 256), and its [`GradientPairs`].
-pub(super) struct Kernel<'a> {
-    pub(super) p: &'a [u8; 512],
-    pub(super) pairs: &'a GradientPairs,
+impl GradientPairs for PerlinPairs {
+    #[inline]
+    fn pair(&self, _: &[u8; 512], i: usize) -> &[[f32; 4]; 2] {
+        &self.0[i]
+    }
 }
 
-impl Kernel<'_> {
+/// The gradients of every pair of hash values, split by axis: entry `i + 16·j` holds the
+/// gradients `g` and `h` that Perlin's `grad` selects for hashes `i` and `j` (mod 16) as
+/// `[gₓ, gᵧ, hₓ, hᵧ]` and `[g_z, h_z, 0, 0]`. The last step of Perlin's chain looks up two
+/// corners that differ along the innermost hashed axis, `p[b]` and `p[b + 1]`; one row gives
+/// both gradients already transposed for the dot products. 8 KiB, the same for every seed
+/// (a `static` the kernel owns, so [`Perlin`](crate::lattice::Perlin) has one size on every
+/// target).
+#[repr(align(32))]
+struct PairRows([[[f32; 4]; 2]; 256]);
+
+static PAIR_ROWS: PairRows = PairRows::new();
+
+impl PairRows {
+    const fn new() -> Self {
+        let mut rows = [[[0.0f32; 4]; 2]; 256];
+        let mut i = 0;
+        while i < 256 {
+            let g = GRAD3[i & 15];
+            let h = GRAD3[i >> 4];
+            rows[i] = [
+                [g[0] as f32, g[1] as f32, h[0] as f32, h[1] as f32],
+                [g[2] as f32, h[2] as f32, 0.0, 0.0],
+            ];
+            i += 1;
+        }
+        PairRows(rows)
+    }
+}
+
+/// The SSE2 kernel over a seed's doubled permutation (see
+/// [`Perlin`](crate::lattice::Perlin)), whose hash chain `p[p[x] + y]` needs no `& 255` (every
+/// index it forms is at most 255 + 256).
+struct Kernel<'a, G> {
+    p: &'a [u8; 512],
+    pairs: &'a G,
+}
+
+impl<G: GradientPairs> Kernel<'_, G> {
     /// Perlin's `p[i]` for `i < 512`.
     #[inline]
     fn p(&self, i: usize) -> usize {
         usize::from(self.p[i])
     }
 
+    /// The gradients of `p[i]` and `p[i + 1]` (`i < 511`).
+    #[inline]
+    fn pair(&self, i: usize) -> &[[f32; 4]; 2] {
+        self.pairs.pair(self.p, i)
+    }
+
     /// The x and y components of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1`, in
     /// that lane order.
     #[inline]
     fn gradients_xy(&self, a: usize, b: usize) -> (m128, m128) {
-        let [ra, rb] = [a, b].map(|i| load_unaligned_m128(&self.pairs.0[i][0]));
+        let [ra, rb] = [a, b].map(|i| load_unaligned_m128(&self.pair(i)[0]));
         let gx = shuffle_abi_f32_all_m128::<0b10_00_10_00>(ra, rb);
         let gy = shuffle_abi_f32_all_m128::<0b11_01_11_01>(ra, rb);
         (gx, gy)
@@ -85,7 +173,7 @@ impl Kernel<'_> {
 
     /// The noise at `(x, y)`, or `None` outside the vector path's range.
     #[inline]
-    pub(super) fn sample2(&self, x: f32, y: f32) -> Option<f32> {
+    fn sample2(&self, x: f32, y: f32) -> Option<f32> {
         let (cell, f, s) = split_fade(m128::from_array([x, y, 0.0, 0.0]), 0b11)?;
         let [cx, cy, _] = cell;
         // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
@@ -105,7 +193,7 @@ impl Kernel<'_> {
 
     /// The noise at `(x, y, z)`, or `None` outside the vector path's range.
     #[inline]
-    pub(super) fn sample3(&self, x: f32, y: f32, z: f32) -> Option<f32> {
+    fn sample3(&self, x: f32, y: f32, z: f32) -> Option<f32> {
         let (cell, f, s) = split_fade(m128::from_array([x, y, z, 0.0]), 0b111)?;
         let [cx, cy, cz] = cell;
         // Perlin's chain, x innermost: corner (i, j, k) hashes p[p[p[x + i] + y + j] + z + k].
@@ -133,7 +221,7 @@ impl Kernel<'_> {
     #[inline]
     fn dots3(&self, a: usize, b: usize, dx: m128, dy: m128, dz: m128) -> m128 {
         let (gx, gy) = self.gradients_xy(a, b);
-        let [za, zb] = [a, b].map(|i| load_unaligned_m128(&self.pairs.0[i][1]));
+        let [za, zb] = [a, b].map(|i| load_unaligned_m128(&self.pair(i)[1]));
         let gz = move_low_high_m128(za, zb);
         add_m128(
             add_m128(mul_m128(dx, gx), mul_m128(dy, gy)),
@@ -205,6 +293,7 @@ fn finish(v: m128, t: m128) -> f32 {
 
 #[cfg(test)]
 mod tests {
+    use super::{GradientPairs, Kernel, PAIR_ROWS, PerlinPairs};
     use crate::lattice::{Perlin, sample_gradient};
 
     /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
@@ -257,30 +346,35 @@ mod tests {
         edge_points.chain(random.take(n))
     }
 
+    /// The kernel over `pairs` against the shared kernel, bit for bit.
+    fn check<G: GradientPairs>(perlin: &Perlin, pairs: &G) {
+        let kernel = Kernel {
+            p: perlin.doubled(),
+            pairs,
+        };
+        let mut vector_path = [0usize; 2];
+        for [x, y, z] in points(200_000) {
+            let expected2: f32 = sample_gradient(perlin, [x, y]);
+            if let Some(v) = kernel.sample2(x, y) {
+                assert_eq!(v.to_bits(), expected2.to_bits(), "2D ({x}, {y})");
+                vector_path[0] += 1;
+            }
+            let expected3: f32 = sample_gradient(perlin, [x, y, z]);
+            if let Some(v) = kernel.sample3(x, y, z) {
+                assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
+                vector_path[1] += 1;
+            }
+        }
+        // Half the random points are in range: the vector path was exercised.
+        assert!(vector_path.iter().all(|&n| n > 90_000), "{vector_path:?}");
+    }
+
     #[test]
     fn vector_kernel_is_the_shared_kernel_bit_for_bit() {
         for seed in [0, 1, 0xdead_beef] {
             let perlin = Perlin::new(seed);
-            let tables = perlin.kernel();
-            let mut vector_path = [0usize; 2];
-            for [x, y, z] in points(200_000) {
-                let expected2: f32 = sample_gradient(&perlin, [x, y]);
-                if let Some(v) = tables.sample2(x, y) {
-                    assert_eq!(
-                        v.to_bits(),
-                        expected2.to_bits(),
-                        "2D ({x}, {y}), seed {seed}"
-                    );
-                    vector_path[0] += 1;
-                }
-                let expected3: f32 = sample_gradient(&perlin, [x, y, z]);
-                if let Some(v) = tables.sample3(x, y, z) {
-                    assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
-                    vector_path[1] += 1;
-                }
-            }
-            // Half the random points are in range: the vector path was exercised.
-            assert!(vector_path.iter().all(|&n| n > 90_000), "{vector_path:?}");
+            check(&perlin, &PAIR_ROWS);
+            check(&perlin, &PerlinPairs::new(perlin.doubled()));
         }
     }
 }

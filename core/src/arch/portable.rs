@@ -1,0 +1,40 @@
+//! The fallbacks of [`arch`](super) for targets without a kernel: each declines, so the portable
+//! code runs.
+
+pub(super) const PERLIN_POINT: bool = false;
+
+#[inline]
+pub(super) fn perlin2(_: &[u8; 512], _: f32, _: f32) -> Option<f32> {
+    None
+}
+
+#[inline]
+pub(super) fn perlin3(_: &[u8; 512], _: f32, _: f32, _: f32) -> Option<f32> {
+    None
+}
+
+/// No kernel uses a seed's gradient pairs here: an empty table.
+#[derive(Clone)]
+pub(crate) struct PerlinPairs;
+
+impl PerlinPairs {
+    pub(crate) const fn new(_: &[u8; 512]) -> Self {
+        Self
+    }
+}
+
+#[inline]
+pub(super) fn perlin2_paired(_: &[u8; 512], _: &PerlinPairs, _: f32, _: f32) -> Option<f32> {
+    None
+}
+
+#[inline]
+pub(super) fn perlin3_paired(
+    _: &[u8; 512],
+    _: &PerlinPairs,
+    _: f32,
+    _: f32,
+    _: f32,
+) -> Option<f32> {
+    None
+}
