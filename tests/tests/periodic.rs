@@ -120,7 +120,7 @@ macro_rules! every_type_and_dim {
 #[test]
 fn every_lattice_noise_repeats_with_any_period() {
     let mut rng = Rng::from_env(160);
-    // By reference, as a user shares one noise (Perlin's tables are 16.5 KiB on x86-64).
+    // By reference, as a user shares one noise (`Periodic<&Perlin, D>`).
     let perlin = Perlin::new(4);
     every_type_and_dim!(gradient_noise, "perlin", &perlin, &mut rng);
     every_type_and_dim!(
