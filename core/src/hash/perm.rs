@@ -4,8 +4,10 @@
 use super::seed::splitmix64;
 
 /// Ken Perlin's permutation of `0..256` from his 2002 reference implementation of improved noise,
-/// the table pbrt calls `NoisePerm` (pbrt stores it twice in succession; indexing `& 255` does the
-/// same without the copy).
+/// the table pbrt calls `NoisePerm`. Both store it twice in succession (`p[i + 256] = p[i]`), so
+/// that `p[x] + y + 1` indexes it without a reduction. [`Permutation`] stores it once and
+/// reduces each index `& 255`; [`Perlin`](crate::lattice::Perlin), whose point kernels are
+/// the hot path, keeps the doubled copy (`hash::chain::Doubled`, 512 bytes).
 pub const PERLIN_2002: [u8; 256] = [
     151, 160, 137, 91, 90, 15, 131, 13, 201, 95, 96, 53, 194, 233, 7, 225, 140, 36, 103, 30, 69,
     142, 8, 99, 37, 240, 21, 10, 23, 190, 6, 148, 247, 120, 234, 75, 0, 26, 197, 62, 94, 252, 219,

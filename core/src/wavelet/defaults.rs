@@ -3,7 +3,7 @@
 //! | tile | coefficients | bytes | why this size |
 //! |---|---|---|---|
 //! | [`TILE2`] | 64 × 64 `f32` | 16 KiB | 2D tiles are cheap; 64² gives a stable variance (4096 coefficients) and, with hashed orientations, no visible repeat |
-//! | [`TILE3`] | 32 × 32 × 32 `f32` | 128 KiB | the largest 3D tile whose compile time (about 4.5 s here) and size suit a desktop or web build; the paper used 128³ (8 MiB) |
+//! | [`TILE3`] | 32 × 32 × 32 `f32` | 128 KiB | the largest 3D tile whose compile time (a few seconds, `scripts/measure-tiles.sh`) and size suit a desktop or web build; the paper used 128³ (8 MiB) |
 //! | [`TILE2_I16`] | 64 × 64 `i16` | 8 KiB | [`TILE2`] quantized, for firmware |
 //! | [`TILE3_I16`] | 32 × 32 × 32 `i16` | 64 KiB | [`TILE3`] quantized, for firmware with the flash for it |
 //!

@@ -16,7 +16,7 @@
 //! | [`Multiband`], [`Bands`]: `Σ w_b N(2^b x)`, variance 1, Gaussian or uniform | eq. 1, §4.2 | `multiband.rs` |
 //! | [`erf`] | §4.2 | `erf.rs` |
 //!
-//! # Measured (see `tests/tests/wavelet.rs` and `tests/benches/wavelet.rs`)
+//! # Properties (tested in `tests/tests/wavelet.rs`)
 //!
 //! * Band variance averaged over 24 tiles: 2D 0.270 (paper 0.265), projected 0.294 (paper
 //!   0.296), 3D 0.1955 (paper 0.210, which is the figure of the odd 65³ tile that the printed
@@ -27,13 +27,15 @@
 //! * Varied tiling: no jump across block borders (≤ 4e-6 over 2e-6); the borders raise the
 //!   variance by 2–3% and leak 1.2% of the power below the band with a 16² tile.
 //! * Quantized tiles: shift 12, error ≤ 1.2e-4. I16F16 against f32: ≤ 3.3e-4.
-//! * Cost: a 32³ tile adds 6.7 s of compile time (16³: 0.8 s; 64² 2D: 0.5 s;
-//!   `scripts/measure-tiles.sh`). ns/sample on this machine (criterion, 2026-11-22):
-//!   Perlin 3D 29; wavelet 2D 26; wavelet 3D 63 (81 where every sample straddles a tile-block
-//!   border, 55 with periodic tiling); projected 990 (axis-aligned normal) and 2300 (oblique).
-//!   Cook & DeRose measured one 3D band 30% faster than RenderMan's Perlin noise; here 2D is 10%
-//!   faster than 3D Perlin and 3D is 2.2× slower: 27 coefficient loads from a 128 KiB tile and
-//!   the orientation hash cost more than Perlin's 8 gradients from a 256-byte table.
+//!
+//! # Cost
+//!
+//! A tile is computed when the crate that names it compiles: a few seconds for a 32³ tile,
+//! well under one for 16³ or 64² (`scripts/measure-tiles.sh`). A 3D band reads 27
+//! coefficients from a tile of up to 128 KiB and hashes its block's orientation, so it costs
+//! more than Perlin's 8 gradients from a 256-byte table: Cook & DeRose measured one 3D band
+//! 30% faster than RenderMan's Perlin noise, here 2D is about as fast as 3D Perlin and 3D
+//! about twice as slow. Figures per machine are in `bench/README.md`.
 
 mod band;
 mod constmath;

@@ -71,7 +71,8 @@ const fn coarse_row(row: &mut [f64; MAX_TILE], n: usize) {
 /// coefficients `δ` apart contribute together to `∫ N²`.
 const OVERLAP: [f64; 3] = [11.0 / 20.0, 13.0 / 60.0, 1.0 / 120.0];
 
-/// One periodic 5-tap convolution with [`OVERLAP`] at index `i` of a row read through `at`.
+/// `Σ_δ G(δ) n_{i+δ}`: the 5-tap convolution with [`OVERLAP`] of the coefficient `c` and its
+/// neighbours `m2, m1` before and `p1, p2` after (the callers read them periodically).
 const fn overlap5(m2: f64, m1: f64, c: f64, p1: f64, p2: f64) -> f64 {
     OVERLAP[0] * c + OVERLAP[1] * (m1 + p1) + OVERLAP[2] * (m2 + p2)
 }
