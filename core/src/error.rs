@@ -45,6 +45,28 @@ pub enum Error {
     /// A Poisson mean that is not finite or not in `(0, 32]` (see
     /// [`Poisson`](crate::hash::Poisson)).
     PoissonMean(f32),
+    /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
+    ///
+    /// [`Spec::build`]: crate::spec::Spec::build
+    Dimension {
+        /// The noise's name in the text form.
+        noise: &'static str,
+        /// The dimension asked for.
+        dims: usize,
+    },
+    /// Periods given for a number of axes other than the noise's dimensions (see
+    /// [`Spec`](crate::spec::Spec)).
+    PeriodAxes {
+        /// The number of periods given.
+        axes: usize,
+        /// The number of axes (at most 4 for a spec without a dimension yet).
+        dims: usize,
+    },
+    /// A periodic wrap asked for a noise that is not a lattice noise (wavelet noise repeats
+    /// with [`Tiling::Periodic`](crate::wavelet::Tiling::Periodic)).
+    NotPeriodic(&'static str),
+    /// A wavelet setting (the tiling) asked for another noise.
+    NotWavelet(&'static str),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -83,6 +105,17 @@ impl fmt::Display for Error {
                 )
             }
             Error::PoissonMean(m) => write!(f, "Poisson mean {m} must be finite and in (0, 32]"),
+            Error::Dimension { noise, dims } => {
+                write!(f, "{noise} noise has no {dims}D form")
+            }
+            Error::PeriodAxes { axes, dims } => {
+                write!(f, "{axes} periods given for {dims} axes")
+            }
+            Error::NotPeriodic(noise) => write!(
+                f,
+                "{noise} noise is not a lattice noise and cannot be wrapped to a period"
+            ),
+            Error::NotWavelet(noise) => write!(f, "{noise} noise has no wavelet tiling"),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")
             }

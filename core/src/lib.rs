@@ -18,6 +18,8 @@
 //! * [`wavelet`]: Cook and DeRose's wavelet noise: band-limited bands over tiles computed at
 //!   compile time, projected onto surfaces, summed into multiband noise.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
+//! * [`spec`]: a noise as a value with a text form (`perlin seed=7 fbm octaves=4`), for
+//!   callers that cannot name Rust types; sampling it gives the typed noise's bits.
 //!
 //! # Example
 //!
@@ -75,6 +77,7 @@ pub mod hash;
 pub mod lattice;
 mod noise;
 mod real;
+pub mod spec;
 pub mod wavelet;
 
 pub use error::Error;

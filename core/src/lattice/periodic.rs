@@ -130,30 +130,42 @@ super::gradient_noise_impls!(
     |n: &Self, _| crate::Noise::<R, D>::amplitude_bound(&n.noise)
 );
 
-impl<R: crate::Real, const D: usize> crate::Noise<R, D> for Periodic<ValueNoise, D> {
-    #[inline]
-    fn sample(&self, p: [R; D]) -> R {
-        self.noise
-            .sample_corners(p, |cell| self.noise.corner_hashes_wrapped(cell, &self.wrap))
-    }
-    fn amplitude_bound(&self) -> f32 {
-        crate::Noise::<R, D>::amplitude_bound(&self.noise)
-    }
-    #[inline]
-    fn sample_lanes(&self, p: &[[R; crate::batch::LANES]; D], out: &mut [R; crate::batch::LANES]) {
-        self.noise.sample_corners_lanes(p, out, |cell| {
-            self.noise.corner_hashes_wrapped(cell, &self.wrap)
-        });
-    }
+/// Value noise is not a gradient lattice: its periodic form samples through its own corners,
+/// by value or by reference.
+macro_rules! periodic_value {
+    ($($v:ty),*) => {$(
+        impl<R: crate::Real, const D: usize> crate::Noise<R, D> for Periodic<$v, D> {
+            #[inline]
+            fn sample(&self, p: [R; D]) -> R {
+                self.noise
+                    .sample_corners(p, |cell| self.noise.corner_hashes_wrapped(cell, &self.wrap))
+            }
+            fn amplitude_bound(&self) -> f32 {
+                crate::Noise::<R, D>::amplitude_bound(&self.noise)
+            }
+            #[inline]
+            fn sample_lanes(
+                &self,
+                p: &[[R; crate::batch::LANES]; D],
+                out: &mut [R; crate::batch::LANES],
+            ) {
+                self.noise.sample_corners_lanes(p, out, |cell| {
+                    self.noise.corner_hashes_wrapped(cell, &self.wrap)
+                });
+            }
+        }
+
+        impl<R: crate::Real, const D: usize> crate::NoiseGradient<R, D> for Periodic<$v, D> {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+                self.noise.sample_corners_with_gradient(p, |cell| {
+                    self.noise.corner_hashes_wrapped(cell, &self.wrap)
+                })
+            }
+        }
+    )*};
 }
 
-impl<R: crate::Real, const D: usize> crate::NoiseGradient<R, D> for Periodic<ValueNoise, D> {
-    #[inline]
-    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-        self.noise.sample_corners_with_gradient(p, |cell| {
-            self.noise.corner_hashes_wrapped(cell, &self.wrap)
-        })
-    }
-}
+periodic_value!(ValueNoise, &ValueNoise);
 
 crate::noise::inherent_amplitude_bound!(Periodic<N, P>, [N, const P: usize]);

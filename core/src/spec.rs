@@ -1,0 +1,732 @@
+//! A noise as a value: which noise, its seed and settings, an optional periodic wrap and an
+//! optional fractal sum, with a compact text form for the callers that cannot name Rust types
+//! (C, JavaScript, the command line, configuration files).
+//!
+//! A [`Spec`] is plain data (`Copy`, no allocation, no tables). [`Spec::build`] checks it against
+//! a dimension and builds the typed noises it names into a [`SpecNoise`], which samples with
+//! exactly the bits of the typed noise it describes (every entry point of
+//! [`NoiseGradient`], batches included), through one dynamic call per sample or batch.
+//!
+//! The layers nest in the only order the crate's types allow: a base noise, wrapped by
+//! [`Periodic`] (lattice noises only), summed by [`Fractal`]. Any other shape cannot be written.
+//!
+//! # Text form
+//!
+//! A base name, then settings separated by spaces, in any order, each at most once:
+//!
+//! ```text
+//! perlin seed=7 period=16,16 fbm octaves=6 lacunarity=2 gain=0.5
+//! wavelet seed=3 tiling=periodic
+//! mnoise seed=1 ridged octaves=4 lacunarity=1.99 gain=0.5
+//! ```
+//!
+//! | setting | value | default |
+//! |---|---|---|
+//! | `seed=` | `0..=4294967295` | 0 |
+//! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice noises) | not periodic |
+//! | `tiling=` | `varied` or `periodic` (wavelet noise, [`Tiling`]) | `varied` |
+//! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
+//! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
+//!
+//! Printing ([`Display`](core::fmt::Display)) writes the base, the seed, and every setting of
+//! each layer present, so a printed spec keeps its meaning if a default changes; parsing the
+//! printed text gives the same spec back (floats print in the shortest form that reads back
+//! exactly). Bad text is a [`ParseError`] naming the byte position and what was expected, never
+//! a panic.
+//!
+//! # Examples
+//!
+//! ```
+//! use bandnoise::prelude::*;
+//! use bandnoise::spec::{Base, Spec};
+//!
+//! let spec: Spec = "perlin seed=7 period=16,16 fbm octaves=4 lacunarity=2 gain=0.5".parse()?;
+//! let noise = spec.build::<2>()?;
+//! let typed = Fractal::fbm(
+//!     Periodic::new(Perlin::new(7), [16, 16])?,
+//!     Octaves::new(4, 2.0, 0.5)?,
+//! );
+//! let p = [0.3f32, 5.7];
+//! assert_eq!(noise.sample(p).to_bits(), typed.sample(p).to_bits());
+//!
+//! // The same spec in Rust, and its text.
+//! let built = Spec::new(Base::Perlin, 7)
+//!     .with_period(&[16, 16])?
+//!     .with_fractal(Kind::Fbm, Octaves::new(4, 2.0, 0.5)?);
+//! assert_eq!(built, spec);
+//! assert_eq!(
+//!     format!("{spec}"),
+//!     "perlin seed=7 period=16,16 fbm octaves=4 lacunarity=2 gain=0.5"
+//! );
+//!
+//! // Errors say where and what.
+//! let err = "perlin seed=-1".parse::<Spec>().unwrap_err();
+//! assert_eq!(err.position(), 12);
+//! assert_eq!(format!("{err}"), "at byte 12: expected a seed in 0..=4294967295");
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use core::fmt;
+use core::str::FromStr;
+
+use crate::batch::{Grid, LANES};
+use crate::fractal::{Fractal, Kind, Octaves};
+use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+use crate::wavelet::{TILE2, TILE3, Tile2, Tile3, Tiling, Wavelet};
+use crate::{Error, Noise, NoiseGradient, Real};
+
+/// The noise a [`Spec`] starts from.
+///
+/// [`TabledPerlin`](crate::lattice::TabledPerlin) has no entry: it is [`Perlin`]'s noise, bit
+/// for bit, with a speed table, and a description names noises, not their storage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Base {
+    /// [`Perlin`]: Perlin's improved noise, 1D–4D. Text: `perlin`.
+    Perlin,
+    /// [`OriginalPerlin`]: Perlin's 1985 noise, 1D–4D. Text: `original`.
+    OriginalPerlin,
+    /// [`ValueNoise`], 1D–4D. Text: `value`.
+    Value,
+    /// [`CNoise`]: Olano's cNoise, 1D–4D. Text: `cnoise`.
+    CNoise,
+    /// [`MNoise<61>`](MNoise): Olano's mNoise with his modulus, 1D–4D. Text: `mnoise`.
+    MNoise,
+    /// [`MNoise<4093>`](MNoise): the largest modulus exact in `f32`, 1D–4D. Text: `mnoise4093`.
+    MNoise4093,
+    /// [`Wavelet`]: one band over the default tile ([`TILE2`] in 2D, [`TILE3`] in 3D).
+    /// Text: `wavelet`.
+    Wavelet,
+}
+
+impl Base {
+    /// Every base, in the order of the enum.
+    pub const ALL: [Base; 7] = [
+        Base::Perlin,
+        Base::OriginalPerlin,
+        Base::Value,
+        Base::CNoise,
+        Base::MNoise,
+        Base::MNoise4093,
+        Base::Wavelet,
+    ];
+
+    /// The name in the text form.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Base::Perlin => "perlin",
+            Base::OriginalPerlin => "original",
+            Base::Value => "value",
+            Base::CNoise => "cnoise",
+            Base::MNoise => "mnoise",
+            Base::MNoise4093 => "mnoise4093",
+            Base::Wavelet => "wavelet",
+        }
+    }
+
+    /// Whether the noise is defined in `dims` dimensions.
+    #[must_use]
+    pub const fn has_dimension(self, dims: usize) -> bool {
+        match self {
+            Base::Wavelet => dims == 2 || dims == 3,
+            _ => dims >= 1 && dims <= 4,
+        }
+    }
+
+    /// Whether the noise can be wrapped by [`Periodic`] (the lattice noises).
+    #[must_use]
+    pub const fn is_lattice(self) -> bool {
+        !matches!(self, Base::Wavelet)
+    }
+}
+
+impl fmt::Display for Base {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A noise as a value (module docs): a [`Base`] and its seed, an optional period per axis,
+/// the wavelet tiling, and an optional fractal sum.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Spec {
+    base: Base,
+    seed: u32,
+    /// The periods, in the first `axes` entries; `axes == 0`: not periodic.
+    period: [u32; 4],
+    axes: u8,
+    tiling: Tiling,
+    fractal: Option<(Kind, Octaves)>,
+}
+
+impl Spec {
+    /// `base` with `seed`, no period, the default tiling and no fractal sum.
+    #[must_use]
+    pub const fn new(base: Base, seed: u32) -> Self {
+        Self {
+            base,
+            seed,
+            period: [0; 4],
+            axes: 0,
+            tiling: Tiling::Varied,
+            fractal: None,
+        }
+    }
+
+    /// The same noise wrapped with `period` (one entry per axis, 1 to 4 of them) by
+    /// [`Periodic`].
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotPeriodic`] for wavelet noise (use [`Tiling::Periodic`]),
+    /// [`Error::PeriodAxes`] for no period or more than 4, [`Error::Period`] for a period
+    /// outside `1..=65536`.
+    pub fn with_period(mut self, period: &[u32]) -> Result<Self, Error> {
+        if !self.base.is_lattice() {
+            return Err(Error::NotPeriodic(self.base.name()));
+        }
+        if period.is_empty() || period.len() > 4 {
+            return Err(Error::PeriodAxes {
+                axes: period.len(),
+                dims: 4,
+            });
+        }
+        let mut all = [0; 4];
+        for (axis, (&p, slot)) in period.iter().zip(&mut all).enumerate() {
+            if !(1..=Periodic::<(), 1>::MAX_PERIOD).contains(&p) {
+                return Err(Error::Period { axis, period: p });
+            }
+            *slot = p;
+        }
+        self.period = all;
+        self.axes = period.len() as u8;
+        Ok(self)
+    }
+
+    /// The same noise with wavelet `tiling`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotWavelet`] unless the base is [`Base::Wavelet`].
+    pub fn with_tiling(mut self, tiling: Tiling) -> Result<Self, Error> {
+        if self.base != Base::Wavelet {
+            return Err(Error::NotWavelet(self.base.name()));
+        }
+        self.tiling = tiling;
+        Ok(self)
+    }
+
+    /// The same noise summed by a [`Fractal`] of `kind` with `octaves`.
+    #[must_use]
+    pub const fn with_fractal(mut self, kind: Kind, octaves: Octaves) -> Self {
+        self.fractal = Some((kind, octaves));
+        self
+    }
+
+    /// The base noise.
+    #[must_use]
+    pub const fn base(&self) -> Base {
+        self.base
+    }
+
+    /// The seed.
+    #[must_use]
+    pub const fn seed(&self) -> u32 {
+        self.seed
+    }
+
+    /// The periods per axis, if the noise is periodic.
+    #[must_use]
+    pub fn period(&self) -> Option<&[u32]> {
+        match self.axes {
+            0 => None,
+            n => self.period.get(..usize::from(n)),
+        }
+    }
+
+    /// The wavelet tiling (only meaningful for [`Base::Wavelet`]).
+    #[must_use]
+    pub const fn tiling(&self) -> Tiling {
+        self.tiling
+    }
+
+    /// The fractal sum, if any.
+    #[must_use]
+    pub const fn fractal(&self) -> Option<(Kind, Octaves)> {
+        self.fractal
+    }
+
+    /// The noise this describes, in `D` dimensions.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Dimension`] when the base has no `D`-dimensional form (wavelet noise is 2D or
+    /// 3D); [`Error::PeriodAxes`] when a period is given for other than `D` axes.
+    pub fn build<const D: usize>(&self) -> Result<SpecNoise<D>, Error> {
+        if !self.base.has_dimension(D) {
+            return Err(Error::Dimension {
+                noise: self.base.name(),
+                dims: D,
+            });
+        }
+        let period = match self.period() {
+            None => None,
+            Some(p) if p.len() == D => {
+                Some(core::array::from_fn(|a| p.get(a).copied().unwrap_or(1)))
+            }
+            Some(p) => {
+                return Err(Error::PeriodAxes {
+                    axes: p.len(),
+                    dims: D,
+                });
+            }
+        };
+        let s = self.seed;
+        let base = match self.base {
+            Base::Perlin => Any::Perlin(Perlin::new(s)),
+            Base::OriginalPerlin => Any::Original(OriginalPerlin::new(s)),
+            Base::Value => Any::Value(ValueNoise::new(s)),
+            Base::CNoise => Any::C(CNoise::new(s)),
+            Base::MNoise => Any::M61(MNoise::new(s)),
+            Base::MNoise4093 => Any::M4093(MNoise::seeded(s)),
+            Base::Wavelet if D == 2 => {
+                Any::Wavelet2(Wavelet::new(s, &TILE2).with_tiling(self.tiling))
+            }
+            Base::Wavelet => Any::Wavelet3(Wavelet::new(s, &TILE3).with_tiling(self.tiling)),
+        };
+        Ok(SpecNoise {
+            spec: *self,
+            base,
+            period,
+        })
+    }
+}
+
+impl Default for Spec {
+    /// `perlin seed=0`.
+    fn default() -> Self {
+        Self::new(Base::Perlin, 0)
+    }
+}
+
+impl fmt::Display for Spec {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} seed={}", self.base, self.seed)?;
+        if let Some(period) = self.period() {
+            f.write_str(" period=")?;
+            for (i, p) in period.iter().enumerate() {
+                if i > 0 {
+                    f.write_str(",")?;
+                }
+                write!(f, "{p}")?;
+            }
+        }
+        if self.base == Base::Wavelet {
+            f.write_str(match self.tiling {
+                Tiling::Varied => " tiling=varied",
+                Tiling::Periodic => " tiling=periodic",
+            })?;
+        }
+        if let Some((kind, o)) = self.fractal {
+            write!(
+                f,
+                " {} octaves={} lacunarity={} gain={}",
+                kind_name(kind),
+                o.count(),
+                o.lacunarity(),
+                o.gain()
+            )?;
+        }
+        Ok(())
+    }
+}
+
+fn kind_name(kind: Kind) -> &'static str {
+    match kind {
+        Kind::Fbm => "fbm",
+        Kind::Turbulence => "turbulence",
+        Kind::Ridged => "ridged",
+    }
+}
+
+/// Why a text is not a [`Spec`]: the byte position, what was expected there, and the
+/// configuration error when the text was well formed but its value was refused.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ParseError {
+    position: usize,
+    expected: &'static str,
+    refused: Option<Error>,
+}
+
+impl ParseError {
+    /// The byte offset in the text where the problem is.
+    #[must_use]
+    pub const fn position(&self) -> usize {
+        self.position
+    }
+
+    /// What the parser expected there.
+    #[must_use]
+    pub const fn expected(&self) -> &'static str {
+        self.expected
+    }
+
+    /// The configuration error, when a well-formed value was refused (an octave count of 0).
+    #[must_use]
+    pub const fn refused(&self) -> Option<Error> {
+        self.refused
+    }
+}
+
+impl fmt::Display for ParseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "at byte {}: expected {}", self.position, self.expected)?;
+        if let Some(e) = self.refused {
+            write!(f, " ({e})")?;
+        }
+        Ok(())
+    }
+}
+
+impl core::error::Error for ParseError {}
+
+/// What the base name position accepts.
+const EXPECTED_BASE: &str =
+    "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, wavelet)";
+const EXPECTED_SETTING: &str =
+    "a setting (seed=, period=, tiling=, fbm, turbulence, ridged, octaves=, lacunarity=, gain=)";
+
+impl FromStr for Spec {
+    type Err = ParseError;
+
+    fn from_str(text: &str) -> Result<Self, ParseError> {
+        let mut words = Words { text, at: 0 };
+        let err = |position, expected| ParseError {
+            position,
+            expected,
+            refused: None,
+        };
+        let (at, name) = words.next().ok_or(err(text.len(), EXPECTED_BASE))?;
+        let base = Base::ALL
+            .into_iter()
+            .find(|b| b.name() == name)
+            .ok_or(err(at, EXPECTED_BASE))?;
+        let mut spec = Spec::new(base, 0);
+        let mut seen = Seen::default();
+        let mut kind = None;
+        let (mut count, mut lacunarity, mut gain) = (None, None, None);
+        let defaults = Octaves::default();
+        for (at, word) in words {
+            let (key, value, value_at) = match word.split_once('=') {
+                Some((k, v)) => (k, Some(v), at + k.len() + 1),
+                None => (word, None, at + word.len()),
+            };
+            let slot = match key {
+                "seed" => &mut seen.seed,
+                "period" => &mut seen.period,
+                "tiling" => &mut seen.tiling,
+                "fbm" | "turbulence" | "ridged" => &mut seen.kind,
+                "octaves" => &mut seen.count,
+                "lacunarity" => &mut seen.lacunarity,
+                "gain" => &mut seen.gain,
+                _ => return Err(err(at, EXPECTED_SETTING)),
+            };
+            if core::mem::replace(slot, true) {
+                return Err(err(at, "each setting at most once"));
+            }
+            let needs_value = |expected| value.ok_or(err(value_at, expected));
+            match key {
+                "seed" => {
+                    const E: &str = "a seed in 0..=4294967295";
+                    let v = needs_value(E)?;
+                    spec.seed = v.parse().map_err(|_| err(value_at, E))?;
+                }
+                "period" => {
+                    const E: &str = "1 to 4 periods in 1..=65536, separated by commas";
+                    let v = needs_value(E)?;
+                    let mut period = [0u32; 4];
+                    let mut axes = 0;
+                    let mut part_at = value_at;
+                    for part in v.split(',') {
+                        let slot = period.get_mut(axes).ok_or(err(part_at, E))?;
+                        *slot = part.parse().map_err(|_| err(part_at, E))?;
+                        axes += 1;
+                        part_at += part.len() + 1;
+                    }
+                    spec = spec
+                        .with_period(period.get(..axes).unwrap_or(&[]))
+                        .map_err(|e| ParseError {
+                            position: value_at,
+                            expected: E,
+                            refused: Some(e),
+                        })?;
+                }
+                "tiling" => {
+                    const E: &str = "a tiling (varied, periodic)";
+                    let tiling = match needs_value(E)? {
+                        "varied" => Tiling::Varied,
+                        "periodic" => Tiling::Periodic,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec.with_tiling(tiling).map_err(|e| ParseError {
+                        position: at,
+                        expected: "tiling only for wavelet noise",
+                        refused: Some(e),
+                    })?;
+                }
+                "fbm" | "turbulence" | "ridged" => {
+                    if value.is_some() {
+                        return Err(err(at + key.len(), "a space after the fractal kind"));
+                    }
+                    kind = Some((
+                        at,
+                        match key {
+                            "fbm" => Kind::Fbm,
+                            "turbulence" => Kind::Turbulence,
+                            _ => Kind::Ridged,
+                        },
+                    ));
+                }
+                "octaves" => {
+                    const E: &str = "an octave count in 1..=30";
+                    let v = needs_value(E)?;
+                    count = Some((value_at, v.parse().map_err(|_| err(value_at, E))?));
+                }
+                "lacunarity" => {
+                    const E: &str = "a lacunarity in (0, 16]";
+                    let v = needs_value(E)?;
+                    lacunarity = Some((value_at, parse_f32(v).ok_or(err(value_at, E))?));
+                }
+                _ => {
+                    const E: &str = "a gain in [-1, 1]";
+                    let v = needs_value(E)?;
+                    gain = Some((value_at, parse_f32(v).ok_or(err(value_at, E))?));
+                }
+            }
+        }
+        let first_octave_setting = [
+            count.map(|c| c.0),
+            lacunarity.map(|l| l.0),
+            gain.map(|g| g.0),
+        ]
+        .into_iter()
+        .flatten()
+        .min();
+        match kind {
+            None => {
+                if let Some(at) = first_octave_setting {
+                    return Err(err(
+                        at,
+                        "a fractal kind (fbm, turbulence, ridged) before octave settings",
+                    ));
+                }
+            }
+            Some((kind_at, kind)) => {
+                let c = count.map_or(defaults.count(), |c| c.1);
+                let l = lacunarity.map_or(defaults.lacunarity(), |l| l.1);
+                let g = gain.map_or(defaults.gain(), |g| g.1);
+                let octaves = Octaves::new(c, l, g).map_err(|e| {
+                    let at = match e {
+                        Error::OctaveCount { .. } => count.map(|c| c.0),
+                        Error::Lacunarity(_) => lacunarity.map(|l| l.0),
+                        Error::Gain(_) => gain.map(|g| g.0),
+                        _ => None,
+                    };
+                    ParseError {
+                        position: at.unwrap_or(kind_at),
+                        expected: "octave settings in range",
+                        refused: Some(e),
+                    }
+                })?;
+                spec = spec.with_fractal(kind, octaves);
+            }
+        }
+        Ok(spec)
+    }
+}
+
+/// A float of the text form: decimal notation only (no `inf`, `nan` or exponents, which
+/// `f32::from_str` would take).
+fn parse_f32(s: &str) -> Option<f32> {
+    let digits = s.strip_prefix('-').unwrap_or(s);
+    let ok = !digits.is_empty()
+        && digits.bytes().all(|b| b.is_ascii_digit() || b == b'.')
+        && digits.bytes().filter(|&b| b == b'.').count() <= 1
+        && digits.bytes().any(|b| b.is_ascii_digit());
+    if ok { s.parse().ok() } else { None }
+}
+
+/// Which settings a text has given.
+#[derive(Default)]
+struct Seen {
+    seed: bool,
+    period: bool,
+    tiling: bool,
+    kind: bool,
+    count: bool,
+    lacunarity: bool,
+    gain: bool,
+}
+
+/// The words of a text (split at ASCII spaces), with their byte offsets.
+struct Words<'a> {
+    text: &'a str,
+    at: usize,
+}
+
+impl<'a> Iterator for Words<'a> {
+    type Item = (usize, &'a str);
+    fn next(&mut self) -> Option<(usize, &'a str)> {
+        let rest = self.text.get(self.at..)?;
+        let trimmed = rest.trim_start_matches(' ');
+        let start = self.at + (rest.len() - trimmed.len());
+        let len = trimmed.find(' ').unwrap_or(trimmed.len());
+        self.at = start + len;
+        if len == 0 {
+            return None;
+        }
+        trimmed.get(..len).map(|w| (start, w))
+    }
+}
+
+/// The typed noises a [`SpecNoise`] may hold.
+#[derive(Clone, Debug)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "no allocation: a built spec holds its noise inline, 512 bytes at most"
+)]
+enum Any {
+    Perlin(Perlin),
+    Original(OriginalPerlin),
+    Value(ValueNoise),
+    C(CNoise),
+    M61(MNoise<61>),
+    M4093(MNoise<4093>),
+    Wavelet2(Wavelet<'static, Tile2<64>>),
+    Wavelet3(Wavelet<'static, Tile3<32>>),
+}
+
+/// A [`Spec`] built for `D` dimensions ([`Spec::build`]): the typed noises it names, sampled
+/// through the crate's own types, so every value is theirs bit for bit.
+#[derive(Clone, Debug)]
+pub struct SpecNoise<const D: usize> {
+    spec: Spec,
+    base: Any,
+    period: Option<[u32; D]>,
+}
+
+impl<const D: usize> SpecNoise<D> {
+    /// The description this noise was built from.
+    #[must_use]
+    pub const fn spec(&self) -> &Spec {
+        &self.spec
+    }
+}
+
+/// The fractal layer of a spec around `n`.
+fn with_fractal<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
+    n: &N,
+    fractal: Option<(Kind, Octaves)>,
+    f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
+) -> T
+where
+    for<'a> Fractal<&'a N>: NoiseGradient<R, D>,
+{
+    match fractal {
+        None => f(n),
+        Some((kind, octaves)) => f(&Fractal::new(n, octaves, kind)),
+    }
+}
+
+/// The periodic and fractal layers of a spec around the lattice noise `n`.
+fn with_layers<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
+    n: &N,
+    period: Option<[u32; D]>,
+    fractal: Option<(Kind, Octaves)>,
+    f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
+) -> T
+where
+    for<'a> Fractal<&'a N>: NoiseGradient<R, D>,
+    for<'a> Periodic<&'a N, D>: NoiseGradient<R, D>,
+    for<'a, 'b> Fractal<&'b Periodic<&'a N, D>>: NoiseGradient<R, D>,
+{
+    // The period was validated by `build`, so `new` succeeds.
+    match period.and_then(|p| Periodic::new(n, p).ok()) {
+        Some(wrapped) => with_fractal(&wrapped, fractal, f),
+        None => with_fractal(n, fractal, f),
+    }
+}
+
+/// The constant 0, which a [`SpecNoise`] never holds for a dimension its base lacks (`build`
+/// refuses it), but which keeps the dispatch total.
+struct Zero;
+
+impl<R: Real, const D: usize> Noise<R, D> for Zero {
+    fn sample(&self, _: [R; D]) -> R {
+        R::ZERO
+    }
+    fn amplitude_bound(&self) -> f32 {
+        0.0
+    }
+}
+
+impl<R: Real, const D: usize> NoiseGradient<R, D> for Zero {
+    fn sample_with_gradient(&self, _: [R; D]) -> (R, [R; D]) {
+        (R::ZERO, [R::ZERO; D])
+    }
+}
+
+/// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` names the variant sampled in this
+/// dimension, if any.
+macro_rules! spec_noise {
+    ($d:literal $(, $wavelet:ident)?) => {
+        impl SpecNoise<$d> {
+            /// Calls `f` with the typed noise this spec describes.
+            fn visit<R: Real, T>(&self, f: impl FnOnce(&dyn NoiseGradient<R, $d>) -> T) -> T {
+                let (period, fractal) = (self.period, self.spec.fractal);
+                match &self.base {
+                    Any::Perlin(n) => with_layers(n, period, fractal, f),
+                    Any::Original(n) => with_layers(n, period, fractal, f),
+                    Any::Value(n) => with_layers(n, period, fractal, f),
+                    Any::C(n) => with_layers(n, period, fractal, f),
+                    Any::M61(n) => with_layers(n, period, fractal, f),
+                    Any::M4093(n) => with_layers(n, period, fractal, f),
+                    $(Any::$wavelet(n) => with_fractal(n, fractal, f),)?
+                    #[allow(unreachable_patterns, reason = "the other wavelet dimension")]
+                    Any::Wavelet2(_) | Any::Wavelet3(_) => f(&Zero),
+                }
+            }
+        }
+
+        impl<R: Real> Noise<R, $d> for SpecNoise<$d> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                self.visit(|n| n.sample(p))
+            }
+            fn amplitude_bound(&self) -> f32 {
+                self.visit::<R, _>(|n| n.amplitude_bound())
+            }
+            fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
+                self.visit(|n| n.sample_lanes(p, out))
+            }
+            fn fill_grid(&self, grid: &Grid<R, $d>, out: &mut [R]) -> Result<(), Error> {
+                self.visit(|n| n.fill_grid(grid, out))
+            }
+            fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), Error> {
+                self.visit(|n| n.fill_points(points, out))
+            }
+        }
+
+        impl<R: Real> NoiseGradient<R, $d> for SpecNoise<$d> {
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                self.visit(|n| n.sample_with_gradient(p))
+            }
+        }
+    };
+}
+
+spec_noise!(1);
+spec_noise!(2, Wavelet2);
+spec_noise!(3, Wavelet3);
+spec_noise!(4);

@@ -1,0 +1,453 @@
+//! The runtime description (`bandnoise::spec`): every variant samples the typed noise it
+//! describes bit for bit, the text form round-trips, bad text is an error with a position (never
+//! a panic), and every noise type of the crate is described.
+
+use bandnoise::prelude::*;
+use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
+use bandnoise::wavelet::Tiling;
+use bandnoise::{Error, batch::Grid};
+use bandnoise_tests::{AllTypes, Rng};
+
+/// A noise in `D` dimensions with gradients, in every number type.
+trait Checked<const D: usize>: AllTypes<D> + NoiseGradient<f32, D> + NoiseGradient<I16F16, D> {}
+impl<const D: usize, T: AllTypes<D> + NoiseGradient<f32, D> + NoiseGradient<I16F16, D>> Checked<D>
+    for T
+{
+}
+
+/// `built` against `typed`: samples in every number type, gradients, a grid and points.
+fn same<const D: usize>(
+    what: &str,
+    built: &impl Checked<D>,
+    typed: &impl Checked<D>,
+    rng: &mut Rng,
+) {
+    for _ in 0..300 {
+        let p: [f32; D] = core::array::from_fn(|_| rng.f64_in(-300.0, 300.0) as f32);
+        let (a, b): (f32, f32) = (built.sample(p), typed.sample(p));
+        assert_eq!(a.to_bits(), b.to_bits(), "{what} f32 at {p:?}");
+        let q = p.map(f64::from);
+        let (a, b): (f64, f64) = (built.sample(q), typed.sample(q));
+        assert_eq!(a.to_bits(), b.to_bits(), "{what} f64 at {p:?}");
+        let r = p.map(I16F16::from_num);
+        let (a, b): (I16F16, I16F16) = (built.sample(r), typed.sample(r));
+        assert_eq!(a, b, "{what} I16F16 at {p:?}");
+        let (a, b) = (
+            NoiseGradient::<f32, D>::sample_with_gradient(built, p),
+            NoiseGradient::<f32, D>::sample_with_gradient(typed, p),
+        );
+        assert_eq!(a, b, "{what} gradient at {p:?}");
+        let (a, b) = (
+            NoiseGradient::<I16F16, D>::sample_with_gradient(built, r),
+            NoiseGradient::<I16F16, D>::sample_with_gradient(typed, r),
+        );
+        assert_eq!(a, b, "{what} I16F16 gradient at {p:?}");
+    }
+    // An off-lattice grid (step not a power-of-two fraction of a cell).
+    let grid = Grid::<f32, D>::new(
+        [-3.3; D],
+        [0.37; D],
+        core::array::from_fn(|a| [40, 3, 2, 2][a]),
+    );
+    let (mut a, mut b) = (vec![0.0f32; grid.len()], vec![0.0f32; grid.len()]);
+    built.fill_grid(&grid, &mut a).expect("sized");
+    typed.fill_grid(&grid, &mut b).expect("sized");
+    assert_eq!(
+        a.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        b.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        "{what} grid"
+    );
+    assert_eq!(
+        Noise::<f32, D>::amplitude_bound(built),
+        Noise::<f32, D>::amplitude_bound(typed),
+        "{what} bound"
+    );
+}
+
+const KINDS: [Kind; 3] = [Kind::Fbm, Kind::Turbulence, Kind::Ridged];
+
+/// A lattice noise: plain, periodic, summed, and summed over periodic.
+fn lattice<const D: usize, N: Checked<D> + Clone>(base: Base, seed: u32, n: N, rng: &mut Rng)
+where
+    SpecNoise<D>: Checked<D>,
+    Fractal<N>: Checked<D>,
+    Periodic<N, D>: Checked<D>,
+    Fractal<Periodic<N, D>>: Checked<D>,
+{
+    let spec = Spec::new(base, seed);
+    let what = format!("{spec} {D}D");
+    same(&what, &spec.build::<D>().expect("valid"), &n, rng);
+    let octaves = Octaves::new(4, 2.0, 0.5).expect("valid");
+    let period: [u32; D] = core::array::from_fn(|a| [3, 256, 1000, 7][a]);
+    let periodic = spec.with_period(&period).expect("valid");
+    same(
+        &format!("{periodic} {D}D"),
+        &periodic.build::<D>().expect("valid"),
+        &Periodic::new(n.clone(), period).expect("valid"),
+        rng,
+    );
+    for kind in KINDS {
+        let summed = spec.with_fractal(kind, octaves);
+        same(
+            &format!("{summed} {D}D"),
+            &summed.build::<D>().expect("valid"),
+            &Fractal::new(n.clone(), octaves, kind),
+            rng,
+        );
+        let both = periodic.with_fractal(kind, octaves);
+        same(
+            &format!("{both} {D}D"),
+            &both.build::<D>().expect("valid"),
+            &Fractal::new(
+                Periodic::new(n.clone(), period).expect("valid"),
+                octaves,
+                kind,
+            ),
+            rng,
+        );
+    }
+}
+
+/// Every lattice base in `D` dimensions.
+fn every_lattice<const D: usize>(rng: &mut Rng)
+where
+    SpecNoise<D>: Checked<D>,
+    Perlin: Checked<D>,
+    OriginalPerlin: Checked<D>,
+    ValueNoise: Checked<D>,
+    CNoise: Checked<D>,
+    MNoise<61>: Checked<D>,
+    MNoise<4093>: Checked<D>,
+    Fractal<Perlin>: Checked<D>,
+    Fractal<OriginalPerlin>: Checked<D>,
+    Fractal<ValueNoise>: Checked<D>,
+    Fractal<CNoise>: Checked<D>,
+    Fractal<MNoise<61>>: Checked<D>,
+    Fractal<MNoise<4093>>: Checked<D>,
+    Periodic<Perlin, D>: Checked<D>,
+    Periodic<OriginalPerlin, D>: Checked<D>,
+    Periodic<ValueNoise, D>: Checked<D>,
+    Periodic<CNoise, D>: Checked<D>,
+    Periodic<MNoise<61>, D>: Checked<D>,
+    Periodic<MNoise<4093>, D>: Checked<D>,
+    Fractal<Periodic<Perlin, D>>: Checked<D>,
+    Fractal<Periodic<OriginalPerlin, D>>: Checked<D>,
+    Fractal<Periodic<ValueNoise, D>>: Checked<D>,
+    Fractal<Periodic<CNoise, D>>: Checked<D>,
+    Fractal<Periodic<MNoise<61>, D>>: Checked<D>,
+    Fractal<Periodic<MNoise<4093>, D>>: Checked<D>,
+{
+    for seed in [0, 9] {
+        lattice::<D, _>(Base::Perlin, seed, Perlin::new(seed), rng);
+        lattice::<D, _>(Base::OriginalPerlin, seed, OriginalPerlin::new(seed), rng);
+        lattice::<D, _>(Base::Value, seed, ValueNoise::new(seed), rng);
+        lattice::<D, _>(Base::CNoise, seed, CNoise::new(seed), rng);
+        lattice::<D, _>(Base::MNoise, seed, MNoise::new(seed), rng);
+        lattice::<D, _>(Base::MNoise4093, seed, MNoise::<4093>::seeded(seed), rng);
+    }
+}
+
+#[test]
+fn every_lattice_spec_samples_its_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(180);
+    every_lattice::<1>(&mut rng);
+    every_lattice::<2>(&mut rng);
+    every_lattice::<3>(&mut rng);
+    every_lattice::<4>(&mut rng);
+}
+
+#[test]
+fn wavelet_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(181);
+    let octaves = Octaves::default();
+    for tiling in [Tiling::Varied, Tiling::Periodic] {
+        let spec = Spec::new(Base::Wavelet, 4)
+            .with_tiling(tiling)
+            .expect("wavelet");
+        let (w2, w3) = (
+            Wavelet::new(4, &TILE2).with_tiling(tiling),
+            Wavelet::new(4, &TILE3).with_tiling(tiling),
+        );
+        same("wavelet 2D", &spec.build::<2>().expect("2D"), &w2, &mut rng);
+        same("wavelet 3D", &spec.build::<3>().expect("3D"), &w3, &mut rng);
+        for kind in KINDS {
+            let summed = spec.with_fractal(kind, octaves);
+            let f2 = Fractal::new(w2, octaves, kind);
+            let f3 = Fractal::new(w3, octaves, kind);
+            same(
+                "summed wavelet 2D",
+                &summed.build::<2>().expect("2D"),
+                &f2,
+                &mut rng,
+            );
+            same(
+                "summed wavelet 3D",
+                &summed.build::<3>().expect("3D"),
+                &f3,
+                &mut rng,
+            );
+        }
+    }
+}
+
+/// Random specs of every shape.
+fn random_spec(rng: &mut Rng) -> Spec {
+    let base = Base::ALL[rng.next_u64() as usize % Base::ALL.len()];
+    let mut spec = Spec::new(base, rng.next_u64() as u32);
+    if base.is_lattice() && rng.next_u64().is_multiple_of(2) {
+        let axes = 1 + rng.next_u64() as usize % 4;
+        let period: Vec<u32> = (0..axes)
+            .map(|_| 1 + (rng.next_u64() % 65536) as u32)
+            .collect();
+        spec = spec.with_period(&period).expect("valid periods");
+    }
+    if base == Base::Wavelet && rng.next_u64().is_multiple_of(2) {
+        spec = spec.with_tiling(Tiling::Periodic).expect("wavelet");
+    }
+    if rng.next_u64().is_multiple_of(2) {
+        let kind = KINDS[rng.next_u64() as usize % 3];
+        let octaves = Octaves::new(
+            1 + (rng.next_u64() % 30) as u32,
+            rng.f64_in(0.01, 16.0) as f32,
+            rng.f64_in(-1.0, 1.0) as f32,
+        )
+        .expect("in range");
+        spec = spec.with_fractal(kind, octaves);
+    }
+    spec
+}
+
+#[test]
+fn text_round_trips() {
+    let mut rng = Rng::from_env(182);
+    for _ in 0..20_000 {
+        let spec = random_spec(&mut rng);
+        let text = spec.to_string();
+        let back: Spec = text.parse().unwrap_or_else(|e| panic!("{text:?}: {e}"));
+        assert_eq!(back, spec, "{text}");
+        assert_eq!(back.to_string(), text);
+    }
+    // Settings in any order, extra spaces, defaults filled in.
+    let e: ParseError = "  fbm perlin".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 2, "'fbm' is not a noise name");
+    let b: Spec = "perlin  gain=0.25 fbm   seed=3 ".parse().expect("valid");
+    assert_eq!(
+        b,
+        Spec::new(Base::Perlin, 3)
+            .with_fractal(Kind::Fbm, Octaves::new(6, 1.99, 0.25).expect("valid"))
+    );
+    assert_eq!(
+        b.to_string(),
+        "perlin seed=3 fbm octaves=6 lacunarity=1.99 gain=0.25"
+    );
+    assert_eq!("value".parse::<Spec>(), Ok(Spec::new(Base::Value, 0)));
+    assert_eq!(Spec::default().to_string(), "perlin seed=0");
+}
+
+#[test]
+fn bad_text_names_the_position_and_what_was_expected() {
+    let cases: &[(&str, usize, &str)] = &[
+        ("", 0, "a noise name"),
+        ("   ", 3, "a noise name"),
+        ("simplex", 0, "a noise name"),
+        ("Perlin", 0, "a noise name"),
+        ("perlin seed", 11, "a seed"),
+        ("perlin seed=", 12, "a seed"),
+        ("perlin seed=x", 12, "a seed"),
+        ("perlin seed=4294967296", 12, "a seed"),
+        ("perlin seed=1 seed=2", 14, "each setting at most once"),
+        ("perlin colour=red", 7, "a setting"),
+        ("perlin period=0", 14, "1 to 4 periods"),
+        ("perlin period=1,2,3,4,5", 22, "1 to 4 periods"),
+        ("perlin period=1,,2", 16, "1 to 4 periods"),
+        ("perlin period=65537", 14, "1 to 4 periods"),
+        ("wavelet period=4", 15, "1 to 4 periods"),
+        ("perlin tiling=periodic", 7, "tiling only for wavelet"),
+        ("wavelet tiling=tiled", 15, "a tiling"),
+        ("perlin octaves=4", 15, "a fractal kind"),
+        ("perlin fbm=1", 10, "a space after the fractal kind"),
+        ("perlin fbm turbulence", 11, "each setting at most once"),
+        ("perlin fbm octaves=0", 19, "octave settings in range"),
+        ("perlin fbm octaves=31", 19, "octave settings in range"),
+        ("perlin fbm lacunarity=inf", 22, "a lacunarity"),
+        ("perlin fbm lacunarity=1e3", 22, "a lacunarity"),
+        ("perlin fbm lacunarity=17", 22, "octave settings in range"),
+        ("perlin fbm gain=NaN", 16, "a gain"),
+        ("perlin fbm gain=-1.5", 16, "octave settings in range"),
+        ("perlin fbm gain=.", 16, "a gain"),
+        ("perlin\tseed=1", 0, "a noise name"),
+    ];
+    for &(text, position, expected) in cases {
+        let e = text
+            .parse::<Spec>()
+            .expect_err(&format!("{text:?} should be refused"));
+        assert_eq!(e.position(), position, "{text:?}: {e}");
+        assert!(e.expected().starts_with(expected), "{text:?}: {e}");
+        assert!(
+            e.to_string()
+                .starts_with(&format!("at byte {position}: expected "))
+        );
+    }
+    // A refused value carries the configuration error.
+    let e = "perlin fbm octaves=0".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::OctaveCount { count: 0, max: 30 }));
+}
+
+#[test]
+fn arbitrary_text_never_panics() {
+    let mut rng = Rng::from_env(183);
+    let alphabet = b"perlinvaluwtcsmo0123456789=,.- fbdgqyr\t\xff";
+    for _ in 0..100_000 {
+        // Mutations of valid texts, and random strings over the text form's alphabet.
+        let mut bytes = random_spec(&mut rng).to_string().into_bytes();
+        for _ in 0..rng.next_u64() % 4 {
+            let i = rng.next_u64() as usize % (bytes.len() + 1);
+            let c = alphabet[rng.next_u64() as usize % alphabet.len()];
+            match rng.next_u64() % 3 {
+                0 if i < bytes.len() => bytes[i] = c,
+                1 if i < bytes.len() => {
+                    bytes.remove(i);
+                }
+                _ => bytes.insert(i, c),
+            }
+        }
+        let text = String::from_utf8_lossy(&bytes);
+        if let Ok(spec) = text.parse::<Spec>() {
+            // Whatever parses prints to a text that parses to the same spec.
+            assert_eq!(spec.to_string().parse::<Spec>(), Ok(spec), "{text:?}");
+        }
+    }
+}
+
+#[test]
+fn build_refuses_dimensions_the_noise_lacks() {
+    let w = Spec::new(Base::Wavelet, 0);
+    assert_eq!(
+        w.build::<1>().unwrap_err(),
+        Error::Dimension {
+            noise: "wavelet",
+            dims: 1
+        }
+    );
+    assert!(w.build::<4>().is_err());
+    assert_eq!(
+        w.with_period(&[4]).unwrap_err(),
+        Error::NotPeriodic("wavelet")
+    );
+    let p = Spec::new(Base::Perlin, 0)
+        .with_period(&[4, 4])
+        .expect("valid");
+    assert_eq!(
+        p.build::<3>().unwrap_err(),
+        Error::PeriodAxes { axes: 2, dims: 3 }
+    );
+    assert_eq!(p.period(), Some(&[4, 4][..]));
+    assert!(Spec::new(Base::Perlin, 0).with_period(&[]).is_err());
+    assert_eq!(
+        Spec::new(Base::Value, 0)
+            .with_tiling(Tiling::Periodic)
+            .unwrap_err(),
+        Error::NotWavelet("value")
+    );
+    // Every base builds in each of its dimensions.
+    for base in Base::ALL {
+        let s = Spec::new(base, 1);
+        assert_eq!(s.build::<1>().is_ok(), base.has_dimension(1), "{base}");
+        assert_eq!(s.build::<2>().is_ok(), base.has_dimension(2), "{base}");
+        assert_eq!(s.build::<3>().is_ok(), base.has_dimension(3), "{base}");
+        assert_eq!(s.build::<4>().is_ok(), base.has_dimension(4), "{base}");
+        assert_eq!(s.to_string().parse::<Spec>(), Ok(s));
+    }
+}
+
+/// Every type in core that implements `Noise` is described by a spec, or says why not. The
+/// list of types comes from the source (each `impl … Noise<…> for T` and each use of the
+/// lattice noises' impl macro), so a new noise without a description fails here.
+#[test]
+fn every_noise_type_in_core_is_described() {
+    let described: &[(&str, &str)] = &[
+        ("Perlin", "perlin"),
+        ("OriginalPerlin", "original"),
+        ("ValueNoise", "value"),
+        ("CNoise", "cnoise"),
+        ("MNoise", "mnoise, mnoise4093"),
+        ("Periodic", "period="),
+        ("Fractal", "fbm, turbulence, ridged"),
+        ("Wavelet", "wavelet"),
+    ];
+    // Types that implement Noise but are not noises of their own.
+    let not_noises: &[(&str, &str)] = &[
+        (
+            "TabledPerlin",
+            "Perlin's values with a speed table: described as perlin",
+        ),
+        ("SpecNoise", "the description itself"),
+        (
+            "Zero",
+            "private: the dispatch's value for dimensions build refuses",
+        ),
+        ("&N", "a reference to a noise"),
+    ];
+    // Not yet described (issue 15, point 7 in progress).
+    let pending: &[&str] = &["Multiband"];
+    let mut found = std::collections::BTreeSet::new();
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/src");
+    let mut dirs = vec![std::path::PathBuf::from(root)];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).expect("core/src") {
+            let path = entry.expect("entry").path();
+            if path.is_dir() {
+                dirs.push(path);
+                continue;
+            }
+            let text = std::fs::read_to_string(&path).expect("source");
+            for line in text.lines() {
+                let line = line.trim();
+                let ty = if line.starts_with("impl")
+                    && line.contains("Noise<")
+                    && line.contains(" for ")
+                {
+                    line.rsplit(" for ").next().map(str::to_string)
+                } else {
+                    line.strip_prefix("gradient_noise_impls!(")
+                        .map(str::to_string)
+                };
+                if let Some(ty) = ty {
+                    let name: String = ty
+                        .trim_start_matches("crate::")
+                        .chars()
+                        .take_while(|c| c.is_alphanumeric() || *c == '&')
+                        .collect();
+                    if !name.is_empty() && name != "$ty" {
+                        found.insert(if name.starts_with('&') {
+                            "&N".to_string()
+                        } else {
+                            name
+                        });
+                    }
+                }
+            }
+        }
+    }
+    for name in ["Perlin", "Fractal", "Wavelet", "Multiband", "SpecNoise"] {
+        assert!(found.contains(name), "the scan finds {name}: {found:?}");
+    }
+    for name in &found {
+        let known = described.iter().any(|(t, _)| t == name)
+            || not_noises.iter().any(|(t, _)| t == name)
+            || pending.contains(&name.as_str());
+        assert!(
+            known,
+            "{name} implements Noise but is not described by bandnoise::spec"
+        );
+    }
+    // Every described base name parses.
+    for (ty, names) in described {
+        if matches!(*ty, "Periodic" | "Fractal") {
+            continue;
+        }
+        for name in names.split(", ") {
+            assert!(name.parse::<Spec>().is_ok(), "{name}");
+        }
+    }
+}
