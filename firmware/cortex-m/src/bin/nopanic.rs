@@ -15,7 +15,6 @@ use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::{
     CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
 };
-use bandnoise::spec::{Base, Spec};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
 };
@@ -102,41 +101,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     }
 }
 
-/// A runtime description: building any spec and sampling it. (Parsing is not here: core's
-/// `f32::from_str` keeps a panic path of its own that the linker cannot drop.)
-fn spec<R: Real>(acc: &mut u32, p: [R; 4], base: Base, period: &[u32]) {
-    let octaves = Octaves::new(black_box(4), black_box(2.0), black_box(0.5)).unwrap_or_default();
-    let spec = Spec::new(base, black_box(7)).with_fractal(black_box(Kind::Ridged), octaves);
-    if let Ok(spec) = spec.with_period(period) {
-        if let Ok(n) = spec.build::<2>() {
-            *acc = acc.wrapping_add(n.sample([p[0], p[1]]).to_f32().to_bits());
-        }
-        if let Ok(n) = spec.build::<3>() {
-            let (v, g) = n.sample_with_gradient([p[0], p[1], p[2]]);
-            *acc = acc.wrapping_add(v.to_f32().to_bits() ^ g[2].to_f32().to_bits());
-        }
-    }
-}
-
 #[entry]
 fn main() -> ! {
     let mut acc = 0u32;
     let bits: [i32; 4] = black_box([1, -2, 3, i32::MIN]);
     lattice::<I16F16>(&mut acc, bits.map(I16F16::from_bits));
     lattice::<f32>(&mut acc, bits.map(|b| f32::from_bits(b as u32)));
-    let base = black_box(Base::ALL)
-        .get(black_box(2))
-        .copied()
-        .unwrap_or(Base::Perlin);
-    let period = black_box([16, 16, 4]);
-    let period = period.get(..black_box(2)).unwrap_or(&[]);
-    spec::<I16F16>(&mut acc, bits.map(I16F16::from_bits), base, period);
-    spec::<f32>(
-        &mut acc,
-        bits.map(|b| f32::from_bits(b as u32)),
-        base,
-        period,
-    );
     black_box(acc);
     loop {}
 }
