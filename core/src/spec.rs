@@ -272,9 +272,10 @@ impl Spec {
         }
         let period = match self.period() {
             None => None,
-            Some(p) if p.len() == D => {
-                Some(core::array::from_fn(|a| p.get(a).copied().unwrap_or(1)))
-            }
+            Some(p) if p.len() == D => Some(Periodic::new(
+                (),
+                core::array::from_fn(|a| p.get(a).copied().unwrap_or(1)),
+            )?),
             Some(p) => {
                 return Err(Error::PeriodAxes {
                     axes: p.len(),
@@ -282,6 +283,9 @@ impl Spec {
                 });
             }
         };
+        let fractal = self
+            .fractal
+            .map(|(kind, octaves)| Fractal::new((), octaves, kind));
         let s = self.seed;
         let base = match self.base {
             Base::Perlin => Any::Perlin(Perlin::new(s)),
@@ -299,6 +303,7 @@ impl Spec {
             spec: *self,
             base,
             period,
+            fractal,
         })
     }
 }
@@ -613,7 +618,9 @@ enum Any {
 pub struct SpecNoise<const D: usize> {
     spec: Spec,
     base: Any,
-    period: Option<[u32; D]>,
+    /// The layers, built and validated once, wrapped around the base at each call.
+    period: Option<Periodic<(), D>>,
+    fractal: Option<Fractal<()>>,
 }
 
 impl<const D: usize> SpecNoise<D> {
@@ -627,7 +634,7 @@ impl<const D: usize> SpecNoise<D> {
 /// The fractal layer of a spec around `n`.
 fn with_fractal<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
     n: &N,
-    fractal: Option<(Kind, Octaves)>,
+    fractal: Option<&Fractal<()>>,
     f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
 ) -> T
 where
@@ -635,15 +642,15 @@ where
 {
     match fractal {
         None => f(n),
-        Some((kind, octaves)) => f(&Fractal::new(n, octaves, kind)),
+        Some(sum) => f(&sum.with_noise(n)),
     }
 }
 
 /// The periodic and fractal layers of a spec around the lattice noise `n`.
 fn with_layers<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
     n: &N,
-    period: Option<[u32; D]>,
-    fractal: Option<(Kind, Octaves)>,
+    period: Option<&Periodic<(), D>>,
+    fractal: Option<&Fractal<()>>,
     f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
 ) -> T
 where
@@ -651,9 +658,8 @@ where
     for<'a> Periodic<&'a N, D>: NoiseGradient<R, D>,
     for<'a, 'b> Fractal<&'b Periodic<&'a N, D>>: NoiseGradient<R, D>,
 {
-    // The period was validated by `build`, so `new` succeeds.
-    match period.and_then(|p| Periodic::new(n, p).ok()) {
-        Some(wrapped) => with_fractal(&wrapped, fractal, f),
+    match period {
+        Some(wrap) => with_fractal(&wrap.with_noise(n), fractal, f),
         None => with_fractal(n, fractal, f),
     }
 }
@@ -684,7 +690,7 @@ macro_rules! spec_noise {
         impl SpecNoise<$d> {
             /// Calls `f` with the typed noise this spec describes.
             fn visit<R: Real, T>(&self, f: impl FnOnce(&dyn NoiseGradient<R, $d>) -> T) -> T {
-                let (period, fractal) = (self.period, self.spec.fractal);
+                let (period, fractal) = (self.period.as_ref(), self.fractal.as_ref());
                 match &self.base {
                     Any::Perlin(n) => with_layers(n, period, fractal, f),
                     Any::Original(n) => with_layers(n, period, fractal, f),

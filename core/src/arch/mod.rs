@@ -10,8 +10,8 @@
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
 //! so the choice changes speed only, never a bit of a result (each kernel's tests compare them).
-//! There is no run-time feature detection: the build's target features decide, so a kernel
-//! needs no `unsafe`.
+//! There is no run-time feature detection: the build's target features decide, so the kernels
+//! stay within the crate's `forbid` lint (intrinsics come through `safe_arch`).
 
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 mod x86_64;
@@ -23,42 +23,17 @@ mod portable;
 #[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
 use portable as selected;
 
-/// Whether this target has the Perlin point kernels ([`perlin2`], [`perlin3`]): a constant, so
-/// callers can skip the `f32` conversions where it has not.
-pub(crate) const PERLIN_POINT: bool = selected::PERLIN_POINT;
-
-/// Perlin's improved noise at `(x, y)` over the doubled permutation `p` (`p[i + 256] = p[i]`),
-/// bit-identical to the shared kernel; `None` where this target has no kernel or the kernel
-/// leaves the point to the shared one (non-finite or beyond ±2³¹).
-#[inline]
-pub(crate) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
-    selected::perlin2(p, x, y)
-}
-
-/// [`perlin2`] in 3D.
-#[inline]
-pub(crate) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
-    selected::perlin3(p, x, y, z)
-}
-
-/// A seed's table for the Perlin point kernels ([`perlin2_paired`], [`perlin3_paired`]), built
-/// by `const fn` from the doubled permutation: 16 KiB on x86-64, empty where no kernel uses it.
-pub(crate) use selected::PerlinPairs;
-
-/// [`perlin2`] with the seed's table of gradient pairs: one dependent lookup fewer.
-#[inline]
-pub(crate) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
-    selected::perlin2_paired(p, pairs, x, y)
-}
-
-/// [`perlin3`] with the seed's table of gradient pairs.
-#[inline]
-pub(crate) fn perlin3_paired(
-    p: &[u8; 512],
-    pairs: &PerlinPairs,
-    x: f32,
-    y: f32,
-    z: f32,
-) -> Option<f32> {
-    selected::perlin3_paired(p, pairs, x, y, z)
-}
+// The kernels of the selected implementation, each with the same signature in every one:
+//
+// * `PERLIN_POINT`: whether this target has the Perlin point kernels (a constant, so callers
+//   skip the `f32` conversions where it has not).
+// * `perlin2(p, x, y)`, `perlin3(p, x, y, z)`: Perlin's improved noise at one point over the
+//   doubled permutation `p` (`p[i + 256] = p[i]`), bit-identical to the shared kernel; `None`
+//   where the target has no kernel or leaves the point to the shared one (non-finite or beyond
+//   ±2³¹).
+// * `PerlinPairs`: a seed's table for the point kernels, built by `const fn` from the doubled
+//   permutation (16 KiB on x86-64, empty where no kernel uses it), and `perlin2_paired`,
+//   `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
+pub(crate) use selected::{
+    PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired,
+};

@@ -1,15 +1,15 @@
 //! The fallbacks of [`arch`](super) for targets without a kernel: each declines, so the portable
 //! code runs.
 
-pub(super) const PERLIN_POINT: bool = false;
+pub(crate) const PERLIN_POINT: bool = false;
 
 #[inline]
-pub(super) fn perlin2(_: &[u8; 512], _: f32, _: f32) -> Option<f32> {
+pub(crate) fn perlin2(_: &[u8; 512], _: f32, _: f32) -> Option<f32> {
     None
 }
 
 #[inline]
-pub(super) fn perlin3(_: &[u8; 512], _: f32, _: f32, _: f32) -> Option<f32> {
+pub(crate) fn perlin3(_: &[u8; 512], _: f32, _: f32, _: f32) -> Option<f32> {
     None
 }
 
@@ -24,12 +24,12 @@ impl PerlinPairs {
 }
 
 #[inline]
-pub(super) fn perlin2_paired(_: &[u8; 512], _: &PerlinPairs, _: f32, _: f32) -> Option<f32> {
+pub(crate) fn perlin2_paired(_: &[u8; 512], _: &PerlinPairs, _: f32, _: f32) -> Option<f32> {
     None
 }
 
 #[inline]
-pub(super) fn perlin3_paired(
+pub(crate) fn perlin3_paired(
     _: &[u8; 512],
     _: &PerlinPairs,
     _: f32,

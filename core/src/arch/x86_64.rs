@@ -29,10 +29,10 @@ use safe_arch::{
 
 use crate::lattice::perlin::GRAD3;
 
-pub(super) const PERLIN_POINT: bool = true;
+pub(crate) const PERLIN_POINT: bool = true;
 
 #[inline]
-pub(super) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
+pub(crate) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
     Kernel {
         p,
         pairs: &PAIR_ROWS,
@@ -41,7 +41,7 @@ pub(super) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
 }
 
 #[inline]
-pub(super) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
+pub(crate) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
     Kernel {
         p,
         pairs: &PAIR_ROWS,
@@ -50,12 +50,12 @@ pub(super) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
 }
 
 #[inline]
-pub(super) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
+pub(crate) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
     Kernel { p, pairs }.sample2(x, y)
 }
 
 #[inline]
-pub(super) fn perlin3_paired(
+pub(crate) fn perlin3_paired(
     p: &[u8; 512],
     pairs: &PerlinPairs,
     x: f32,

@@ -229,6 +229,16 @@ impl<N> Fractal<N> {
         &self.noise
     }
 
+    /// A sum of `noise` with these (validated) settings.
+    pub(crate) fn with_noise<M>(&self, noise: M) -> Fractal<M> {
+        Fractal {
+            noise,
+            octaves: self.octaves,
+            kind: self.kind,
+            clamped_mean: self.clamped_mean,
+        }
+    }
+
     /// Sums `full` octaves, then octave `full` with weight `partial` (if `full < count`), then
     /// adds the clamped-octave mean for the octaves after it (turbulence only; `add_clamped`).
     fn sum<R: Real, const D: usize>(&self, p: [R; D], full: u32, partial: R, add_clamped: bool) -> R

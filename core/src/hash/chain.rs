@@ -62,10 +62,10 @@ impl Doubled {
 }
 
 impl ChainHash for Doubled {
-    const PERIOD: u32 = 256;
+    const PERIOD: u32 = Permutation::PERIOD;
     #[inline]
     fn reduce(c: i32) -> u32 {
-        (c & 255) as u32
+        Permutation::reduce(c)
     }
     #[inline]
     fn step(&self, h: u32, c: u32) -> u32 {
@@ -205,6 +205,22 @@ impl<const D: usize> Wrap<D> {
             upper[a] = if c as i64 + 1 == p { 0 } else { c + 1 };
         }
         (lower, upper)
+    }
+
+    /// The `2^D` corner hashes of `cell` translated by `shift` and wrapped ([`corners`](Self::corners)),
+    /// folded by `hash` ([`fold`](Self::fold)) in `order` from `start`: the wrapped form of the
+    /// module's [`corners`](self::corners) chain, which every periodic lattice noise uses.
+    #[inline]
+    pub(crate) fn corner_hashes<H: ChainHash>(
+        &self,
+        hash: &H,
+        order: Order,
+        start: u32,
+        cell: [i32; D],
+        shift: [u32; D],
+    ) -> [u32; MAX_CORNERS] {
+        let (lower, upper) = self.corners(cell, shift);
+        corners(order, start, lower, upper, |h, c| Self::fold(hash, h, c))
     }
 
     /// `step` extended to wrapped coordinates of any size: `c` in base `H::PERIOD`, low digit

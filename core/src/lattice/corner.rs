@@ -192,10 +192,7 @@ impl<const M: u32, const D: usize> WrapCorners<D> for MNoise<M> {
     #[inline]
     fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
         let shift = core::array::from_fn(|a| self.offset[a]);
-        let (lower, upper) = wrap.corners(cell, shift);
-        chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
-            Wrap::<D>::fold(&Bbs::<M>, h, c)
-        })
+        wrap.corner_hashes(&Bbs::<M>, Order::LastFirst, self.inner[D - 1], cell, shift)
     }
 }
 
@@ -271,9 +268,12 @@ crate::noise::inherent_amplitude_bound!(CNoise, []);
 impl<const D: usize> WrapCorners<D> for CNoise {
     #[inline]
     fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
-        let (lower, upper) = wrap.corners(cell, [0; D]);
-        chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
-            Wrap::<D>::fold(&self.perm, h, c)
-        })
+        wrap.corner_hashes(
+            &self.perm,
+            Order::LastFirst,
+            self.inner[D - 1],
+            cell,
+            [0; D],
+        )
     }
 }

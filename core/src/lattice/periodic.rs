@@ -87,6 +87,14 @@ impl<N, const D: usize> Periodic<N, D> {
     pub fn noise(&self) -> &N {
         &self.noise
     }
+
+    /// `noise` with these (validated) periods.
+    pub(crate) fn with_noise<M>(&self, noise: M) -> Periodic<M, D> {
+        Periodic {
+            noise,
+            wrap: self.wrap,
+        }
+    }
 }
 
 /// A lattice noise whose corners can be hashed with wrapped coordinates.

@@ -76,10 +76,7 @@ impl Perlin {
 impl<const D: usize> WrapCorners<D> for Perlin {
     #[inline]
     fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
-        let (lower, upper) = wrap.corners(cell, [0; D]);
-        chain::corners(Order::XFirst, 0, lower, upper, |h, c| {
-            Wrap::<D>::fold(&self.p, h, c)
-        })
+        wrap.corner_hashes(&self.p, Order::XFirst, 0, cell, [0; D])
     }
 }
 
@@ -97,6 +94,24 @@ impl core::fmt::Debug for Perlin {
 #[inline]
 fn has_vector_kernel<R: Real>() -> bool {
     arch::PERLIN_POINT && R::BINARY32
+}
+
+/// A point sample: the target's vector `kernel` in `f32` where there is one (falling back to the
+/// shared kernel for the coordinates it leaves), else the shared kernel in `R`.
+#[inline]
+fn sample_point<R: Real, const D: usize>(
+    perlin: &Perlin,
+    p: [R; D],
+    kernel: impl FnOnce([f32; D]) -> Option<f32>,
+) -> R
+where
+    Perlin: GradientLattice<D>,
+{
+    if has_vector_kernel::<R>() {
+        let f = p.map(R::to_f32);
+        return R::from_f32(kernel(f).unwrap_or_else(|| shared_kernel(perlin, f)));
+    }
+    sample_gradient(perlin, p)
 }
 
 /// The shared kernel in `f32`, for the coordinates the vector kernel leaves to it (beyond ±2³¹,
@@ -220,12 +235,7 @@ macro_rules! forward_to_perlin {
             $(
                 #[inline]
                 fn sample_point<R: Real>(&self, p: [R; $d]) -> R {
-                    if has_vector_kernel::<R>() {
-                        let f = p.map(R::to_f32);
-                        let v = $point(&self.perlin, &self.pairs, f);
-                        return R::from_f32(v.unwrap_or_else(|| shared_kernel(&self.perlin, f)));
-                    }
-                    sample_gradient(&self.perlin, p)
+                    sample_point(&self.perlin, p, |f| $point(&self.perlin, &self.pairs, f))
                 }
             )?
         }
@@ -343,12 +353,7 @@ impl GradientLattice<2> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 2]) -> R {
-        if has_vector_kernel::<R>() {
-            let [x, y] = p.map(R::to_f32);
-            let v = arch::perlin2(self.doubled(), x, y);
-            return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y])));
-        }
-        sample_gradient(self, p)
+        sample_point(self, p, |[x, y]| arch::perlin2(self.doubled(), x, y))
     }
     #[inline]
     fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
@@ -376,12 +381,7 @@ impl GradientLattice<3> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 3]) -> R {
-        if has_vector_kernel::<R>() {
-            let [x, y, z] = p.map(R::to_f32);
-            let v = arch::perlin3(self.doubled(), x, y, z);
-            return R::from_f32(v.unwrap_or_else(|| shared_kernel(self, [x, y, z])));
-        }
-        sample_gradient(self, p)
+        sample_point(self, p, |[x, y, z]| arch::perlin3(self.doubled(), x, y, z))
     }
     #[inline]
     fn point_kernel_for_scattered_lanes<R: Real>() -> bool {

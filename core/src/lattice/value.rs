@@ -151,9 +151,6 @@ crate::noise::inherent_amplitude_bound!(ValueNoise, []);
 impl<const D: usize> WrapCorners<D> for ValueNoise {
     #[inline]
     fn corner_hashes_wrapped(&self, cell: [i32; D], wrap: &Wrap<D>) -> [u32; MAX_CORNERS] {
-        let (lower, upper) = wrap.corners(cell, [0; D]);
-        chain::corners(Order::XFirst, 0, lower, upper, |h, c| {
-            Wrap::<D>::fold(&self.perm, h, c)
-        })
+        wrap.corner_hashes(&self.perm, Order::XFirst, 0, cell, [0; D])
     }
 }
