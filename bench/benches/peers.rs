@@ -1,5 +1,6 @@
 //! bandnoise against the peer crates, in one run: ns/sample over the same 1024² grid for every
-//! workload of `bandnoise_bench`, then a table of each ratio to the fastest peer.
+//! workload of `bandnoise_bench` on each of its grid layouts, then a table of each ratio to the
+//! fastest peer.
 //!
 //! Criterion measures each workload for seconds, one after the other, so on a shared machine
 //! a change of load between two measurements moves their ratio (by ±20% here). A second pass
@@ -16,28 +17,32 @@ use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use bandnoise_bench::{FUNCTIONS, IMPLEMENTATIONS, N, Run, peer_function, workload};
+use bandnoise_bench::{
+    FUNCTIONS, IMPLEMENTATIONS, LAYOUTS, Layout, N, Run, peer_function, workload,
+};
 use criterion::{Criterion, Throughput};
 
 fn peers(c: &mut Criterion) {
     let mut out = vec![0.0f32; N * N];
-    for function in FUNCTIONS {
-        let mut g = c.benchmark_group(format!("peers-{function}"));
-        g.throughput(Throughput::Elements((N * N) as u64));
-        g.sample_size(10);
-        g.warm_up_time(Duration::from_secs(1));
-        g.measurement_time(Duration::from_secs(3));
-        for implementation in IMPLEMENTATIONS {
-            if let Some(run) = workload(function, implementation) {
-                g.bench_function(implementation, |b| {
-                    b.iter(|| {
-                        run(N, &mut out);
-                        std::hint::black_box(&out);
-                    })
-                });
+    for layout in LAYOUTS {
+        for function in FUNCTIONS {
+            let mut g = c.benchmark_group(format!("peers-{}-{function}", layout.name));
+            g.throughput(Throughput::Elements((N * N) as u64));
+            g.sample_size(10);
+            g.warm_up_time(Duration::from_secs(1));
+            g.measurement_time(Duration::from_secs(2));
+            for implementation in IMPLEMENTATIONS {
+                if let Some(run) = workload(function, implementation, layout) {
+                    g.bench_function(implementation, |b| {
+                        b.iter(|| {
+                            run(N, &mut out);
+                            std::hint::black_box(&out);
+                        })
+                    });
+                }
             }
+            g.finish();
         }
-        g.finish();
     }
 }
 
@@ -59,9 +64,9 @@ fn criterion_dir() -> PathBuf {
 }
 
 /// The mean time per grid from criterion's `estimates.json`, in ns per sample.
-fn ns_per_sample(function: &str, implementation: &str) -> Option<f64> {
+fn ns_per_sample(layout: Layout, function: &str, implementation: &str) -> Option<f64> {
     let path = criterion_dir()
-        .join(format!("peers-{function}"))
+        .join(format!("peers-{}-{function}", layout.name))
         .join(implementation)
         .join("new/estimates.json");
     let json = std::fs::read_to_string(path).ok()?;
@@ -71,19 +76,22 @@ fn ns_per_sample(function: &str, implementation: &str) -> Option<f64> {
     Some(value[..end].trim().parse::<f64>().ok()? / (N * N) as f64)
 }
 
-fn table() {
-    println!("\nns/sample over a {N}x{N} grid; ratio = bandnoise / fastest peer (lower is better)");
+fn table(layout: Layout) {
+    println!(
+        "\nns/sample over a {N}x{N} grid, layout {} (step {}, origin {:?}); ratio = bandnoise / fastest peer (lower is better)",
+        layout.name, layout.step, layout.origin
+    );
     println!(
         "| function | bandnoise | batch | noise | fastnoise-lite | noise-functions | libnoise | fastest peer | point ratio | batch ratio |"
     );
     println!("|---|---|---|---|---|---|---|---|---|---|");
     let cell = |v: Option<f64>| v.map_or("–".to_string(), |v| format!("{v:.2}"));
     for function in FUNCTIONS {
-        let ns = IMPLEMENTATIONS.map(|i| ns_per_sample(function, i));
+        let ns = IMPLEMENTATIONS.map(|i| ns_per_sample(layout, function, i));
         let peer = peer_function(function);
         let fastest = IMPLEMENTATIONS[2..]
             .iter()
-            .filter_map(|&i| ns_per_sample(peer, i).map(|v| (v, i)))
+            .filter_map(|&i| ns_per_sample(layout, peer, i).map(|v| (v, i)))
             .min_by(|a, b| a.0.total_cmp(&b.0));
         let ratio = |v: Option<f64>| match (v, fastest) {
             (Some(v), Some((f, _))) => format!("{:.2}", v / f),
@@ -132,10 +140,11 @@ fn quantile(v: &mut [f64], q: f64) -> f64 {
 }
 
 /// The paired pass (module docs): the median ratio to the fastest peer and its quartiles.
-fn paired_table() {
+fn paired_table(layout: Layout) {
     let mut out = vec![0.0f32; N * N];
     println!(
-        "\nratio to the fastest peer, paired: median [quartiles] of {ROUNDS} interleaved rounds of {PAIRED_ROWS} rows"
+        "\nratio to the fastest peer, layout {}, paired: median [quartiles] of {ROUNDS} interleaved rounds of {PAIRED_ROWS} rows",
+        layout.name
     );
     println!("| function | point ratio | batch ratio |");
     println!("|---|---|---|");
@@ -143,9 +152,9 @@ fn paired_table() {
         let peer = peer_function(function);
         let peers: Vec<Run> = IMPLEMENTATIONS[2..]
             .iter()
-            .filter_map(|&i| workload(peer, i))
+            .filter_map(|&i| workload(peer, i, layout))
             .collect();
-        let ours = [IMPLEMENTATIONS[0], IMPLEMENTATIONS[1]].map(|i| workload(function, i));
+        let ours = [IMPLEMENTATIONS[0], IMPLEMENTATIONS[1]].map(|i| workload(function, i, layout));
         if peers.is_empty() {
             continue;
         }
@@ -182,7 +191,11 @@ fn main() {
     peers(&mut c);
     c.final_summary();
     if !std::env::args().any(|a| a == "--test" || a == "--list") {
-        table();
-        paired_table();
+        for layout in LAYOUTS {
+            table(layout);
+        }
+        for layout in LAYOUTS {
+            paired_table(layout);
+        }
     }
 }

@@ -1,7 +1,9 @@
-//! The workloads of the peer benchmark: the same 1024-wide grid, 1/16 of a lattice cell between
-//! samples (z = 0.37 for 3D), evaluated by bandnoise (point by point and with
-//! [`Noise::fill_grid`]) and by the peer crates `noise` 0.9, `fastnoise-lite` 1.1,
-//! `noise-functions` 0.8 and `libnoise` 1.2.
+//! The workloads of the peer benchmark: a 1024-wide grid (z = 0.37 for 3D, and w = 0.61 for
+//! 4D) evaluated by bandnoise (point by point and with [`Noise::fill_grid`]) and by the peer
+//! crates `noise` 0.9, `fastnoise-lite` 1.1, `noise-functions` 0.8 and `libnoise` 1.2, on each
+//! of the [`LAYOUTS`]: 1/16 of a lattice cell between samples from the origin (every chunk of
+//! 16 samples of a row in one cell), and a grid as a user has one, whose step is not a
+//! power-of-two fraction of a cell and whose origin is off the lattice.
 //!
 //! Every workload writes each sample into the same output buffer, so all pay the same memory
 //! traffic. `benches/peers.rs` times them with criterion and prints the ratio table;
@@ -16,15 +18,50 @@ use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 
 /// Samples per row (and rows in the timed grid).
 pub const N: usize = 1024;
-/// Distance between samples, in lattice cells.
-pub const STEP: f32 = 1.0 / 16.0;
-/// The fixed third coordinate of the 3D workloads.
+/// The fixed third coordinate of the 3D and 4D workloads.
 pub const Z: f32 = 0.37;
+/// The fixed fourth coordinate of the 4D workloads.
+pub const W: f32 = 0.61;
+
+/// Where a grid's samples are: sample `(i, j)` is at `origin + (i, j) · step`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Layout {
+    /// The name in the tables and on the command line.
+    pub name: &'static str,
+    /// The coordinates of sample `(0, 0)`.
+    pub origin: [f32; 2],
+    /// The distance between neighbouring samples, in lattice cells.
+    pub step: f32,
+}
+
+/// The grids every workload runs on. `sixteenth` is the benchmark's historical grid (its rows'
+/// chunks of 16 samples each lie in one cell, which the batch kernels exploit);
+/// `off-lattice` is what a user has: a step of 0.0737 cells (a chunk of 16 samples spans 1.1
+/// cells, so nearly every chunk straddles a cell boundary) from an origin inside a cell.
+pub const LAYOUTS: [Layout; 2] = [
+    Layout {
+        name: "sixteenth",
+        origin: [0.0, 0.0],
+        step: 1.0 / 16.0,
+    },
+    Layout {
+        name: "off-lattice",
+        origin: [3.217, -5.683],
+        step: 0.0737,
+    },
+];
+
+/// The layout named `name`.
+#[must_use]
+pub fn layout(name: &str) -> Option<Layout> {
+    LAYOUTS.into_iter().find(|l| l.name == name)
+}
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 10] = [
+pub const FUNCTIONS: [&str; 11] = [
     "perlin-2d",
     "perlin-3d",
+    "perlin-4d",
     "tabled-perlin-2d",
     "tabled-perlin-3d",
     "mnoise-2d",
@@ -48,58 +85,83 @@ pub const IMPLEMENTATIONS: [&str; 6] = [
 /// A workload: fills `rows` rows of the grid into `out` (`rows · N` values).
 pub type Run = Box<dyn Fn(usize, &mut [f32])>;
 
-/// Point evaluation over the 2D grid.
-fn points2(rows: usize, out: &mut [f32], f: impl Fn(f32, f32) -> f32) {
-    for (j, row) in out.chunks_exact_mut(N).take(rows).enumerate() {
-        let y = j as f32 * STEP;
-        for (i, o) in row.iter_mut().enumerate() {
-            *o = f(i as f32 * STEP, y);
+impl Layout {
+    /// Point evaluation of `f` at every sample of `rows` rows (the same coordinates as
+    /// [`Layout::grid`]).
+    fn points(self, rows: usize, out: &mut [f32], f: impl Fn(f32, f32) -> f32) {
+        for (j, row) in out.chunks_exact_mut(N).take(rows).enumerate() {
+            let y = self.origin[1] + j as f32 * self.step;
+            for (i, o) in row.iter_mut().enumerate() {
+                *o = f(self.origin[0] + i as f32 * self.step, y);
+            }
         }
+    }
+
+    /// The grid of `rows` rows for bandnoise's batch path, in `D` dimensions (the axes past 1
+    /// at [`Z`] and [`W`]).
+    fn grid<const D: usize>(self, rows: usize) -> Grid<f32, D> {
+        let fixed = [Z, W];
+        Grid::new(
+            core::array::from_fn(|a| if a < 2 { self.origin[a] } else { fixed[a - 2] }),
+            core::array::from_fn(|a| if a < 2 { self.step } else { 0.0 }),
+            core::array::from_fn(|a| match a {
+                0 => N,
+                1 => rows,
+                _ => 1,
+            }),
+        )
+    }
+
+    fn batch<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
+        Box::new(move |rows, out| {
+            noise
+                .fill_grid(&self.grid::<D>(rows), &mut out[..rows * N])
+                .unwrap()
+        })
+    }
+
+    fn point2<No: Noise<f32, 2> + 'static>(self, noise: No) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y])))
+    }
+
+    fn point3<No: Noise<f32, 3> + 'static>(self, noise: No) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y, Z])))
+    }
+
+    fn point4<No: Noise<f32, 4> + 'static>(self, noise: No) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y, Z, W])))
+    }
+
+    /// A peer's 2D function of `f32` coordinates.
+    fn peer2(self, f: impl Fn(f32, f32) -> f32 + 'static) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, &f))
+    }
+
+    /// A peer's 2D function of `f64` coordinates (`noise`, `libnoise`).
+    fn peer2_f64(self, f: impl Fn([f64; 2]) -> f64 + 'static) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, |x, y| f([x as f64, y as f64]) as f32))
+    }
+
+    /// A peer's 3D function of `f64` coordinates, on the plane `z = Z`.
+    fn peer3_f64(self, f: impl Fn([f64; 3]) -> f64 + 'static) -> Run {
+        Box::new(move |rows, out| {
+            self.points(rows, out, |x, y| f([x as f64, y as f64, Z as f64]) as f32)
+        })
+    }
+
+    /// A peer's 4D function of `f64` coordinates, on the plane `z = Z`, `w = W`.
+    fn peer4_f64(self, f: impl Fn([f64; 4]) -> f64 + 'static) -> Run {
+        Box::new(move |rows, out| {
+            self.points(rows, out, |x, y| {
+                f([x as f64, y as f64, Z as f64, W as f64]) as f32
+            })
+        })
     }
 }
 
-/// The grid for bandnoise's batch path: the same coordinates as [`points2`].
-fn grid2(rows: usize) -> Grid<f32, 2> {
-    Grid::new([0.0; 2], [STEP; 2], [N, rows])
-}
-
-fn grid3(rows: usize) -> Grid<f32, 3> {
-    Grid::new([0.0, 0.0, Z], [STEP, STEP, 0.0], [N, rows, 1])
-}
-
-fn batch2<No: Noise<f32, 2> + 'static>(noise: No) -> Run {
-    Box::new(move |rows, out| noise.fill_grid(&grid2(rows), &mut out[..rows * N]).unwrap())
-}
-
-fn batch3<No: Noise<f32, 3> + 'static>(noise: No) -> Run {
-    Box::new(move |rows, out| noise.fill_grid(&grid3(rows), &mut out[..rows * N]).unwrap())
-}
-
-fn point2<No: Noise<f32, 2> + 'static>(noise: No) -> Run {
-    Box::new(move |rows, out| points2(rows, out, |x, y| noise.sample([x, y])))
-}
-
-fn point3<No: Noise<f32, 3> + 'static>(noise: No) -> Run {
-    Box::new(move |rows, out| points2(rows, out, |x, y| noise.sample([x, y, Z])))
-}
-
-/// A libnoise generator over the 2D grid (libnoise computes in f64).
-fn libnoise2<G: libnoise::Generator<2> + 'static>(n: G) -> Run {
-    Box::new(move |rows, out| points2(rows, out, |x, y| n.sample([x as f64, y as f64]) as f32))
-}
-
-/// A libnoise generator over the 3D grid's plane `z = Z`.
-fn libnoise3<G: libnoise::Generator<3> + 'static>(n: G) -> Run {
-    Box::new(move |rows, out| {
-        points2(rows, out, |x, y| {
-            n.sample([x as f64, y as f64, Z as f64]) as f32
-        })
-    })
-}
-
-/// The workload `function` by `implementation`, if that implementation has it.
+/// The workload `function` by `implementation` on `layout`, if that implementation has it.
 #[must_use]
-pub fn workload(function: &str, implementation: &str) -> Option<Run> {
+pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<Run> {
     use fastnoise_lite::{FastNoiseLite, FractalType, NoiseType};
     use noise::{MultiFractal, NoiseFn};
     use noise_functions::Noise as _;
@@ -115,97 +177,105 @@ pub fn workload(function: &str, implementation: &str) -> Option<Run> {
         n
     };
     let fbm = || Fractal::fbm(Perlin::new(0), Octaves::new(6, 2.0, 0.5).unwrap());
+    let l = layout;
     let run: Run = match (function, implementation) {
-        ("perlin-2d", "bandnoise") => point2(Perlin::new(0)),
-        ("perlin-2d", "bandnoise-batch") => batch2(Perlin::new(0)),
-        ("perlin-3d", "bandnoise") => point3(Perlin::new(0)),
-        ("perlin-3d", "bandnoise-batch") => batch3(Perlin::new(0)),
-        ("tabled-perlin-2d", "bandnoise") => point2(TabledPerlin::new(0)),
-        ("tabled-perlin-2d", "bandnoise-batch") => batch2(TabledPerlin::new(0)),
-        ("tabled-perlin-3d", "bandnoise") => point3(TabledPerlin::new(0)),
-        ("tabled-perlin-3d", "bandnoise-batch") => batch3(TabledPerlin::new(0)),
-        ("mnoise-2d", "bandnoise") => point2(MNoise::<61>::new(0)),
-        ("mnoise-2d", "bandnoise-batch") => batch2(MNoise::<61>::new(0)),
-        ("mnoise-3d", "bandnoise") => point3(MNoise::<61>::new(0)),
-        ("mnoise-3d", "bandnoise-batch") => batch3(MNoise::<61>::new(0)),
-        ("value-2d", "bandnoise") => point2(ValueNoise::new(0)),
-        ("value-2d", "bandnoise-batch") => batch2(ValueNoise::new(0)),
-        ("wavelet-2d", "bandnoise") => point2(Wavelet::new(0, &TILE2)),
-        ("wavelet-2d", "bandnoise-batch") => batch2(Wavelet::new(0, &TILE2)),
-        ("wavelet-3d", "bandnoise") => point3(Wavelet::new(0, &TILE3)),
-        ("wavelet-3d", "bandnoise-batch") => batch3(Wavelet::new(0, &TILE3)),
-        ("fbm6-perlin-3d", "bandnoise") => point3(fbm()),
-        ("fbm6-perlin-3d", "bandnoise-batch") => batch3(fbm()),
+        ("perlin-2d", "bandnoise") => l.point2(Perlin::new(0)),
+        ("perlin-2d", "bandnoise-batch") => l.batch::<_, 2>(Perlin::new(0)),
+        ("perlin-3d", "bandnoise") => l.point3(Perlin::new(0)),
+        ("perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(Perlin::new(0)),
+        ("perlin-4d", "bandnoise") => l.point4(Perlin::new(0)),
+        ("perlin-4d", "bandnoise-batch") => l.batch::<_, 4>(Perlin::new(0)),
+        ("tabled-perlin-2d", "bandnoise") => l.point2(TabledPerlin::new(0)),
+        ("tabled-perlin-2d", "bandnoise-batch") => l.batch::<_, 2>(TabledPerlin::new(0)),
+        ("tabled-perlin-3d", "bandnoise") => l.point3(TabledPerlin::new(0)),
+        ("tabled-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(TabledPerlin::new(0)),
+        ("mnoise-2d", "bandnoise") => l.point2(MNoise::new(0)),
+        ("mnoise-2d", "bandnoise-batch") => l.batch::<_, 2>(MNoise::new(0)),
+        ("mnoise-3d", "bandnoise") => l.point3(MNoise::new(0)),
+        ("mnoise-3d", "bandnoise-batch") => l.batch::<_, 3>(MNoise::new(0)),
+        ("value-2d", "bandnoise") => l.point2(ValueNoise::new(0)),
+        ("value-2d", "bandnoise-batch") => l.batch::<_, 2>(ValueNoise::new(0)),
+        ("wavelet-2d", "bandnoise") => l.point2(Wavelet::new(0, &TILE2)),
+        ("wavelet-2d", "bandnoise-batch") => l.batch::<_, 2>(Wavelet::new(0, &TILE2)),
+        ("wavelet-3d", "bandnoise") => l.point3(Wavelet::new(0, &TILE3)),
+        ("wavelet-3d", "bandnoise-batch") => l.batch::<_, 3>(Wavelet::new(0, &TILE3)),
+        ("fbm6-perlin-3d", "bandnoise") => l.point3(fbm()),
+        ("fbm6-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(fbm()),
 
         ("perlin-2d", "noise") => {
             let n = noise::Perlin::new(0);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get([x as f64, y as f64]) as f32))
+            l.peer2_f64(move |p| n.get(p))
         }
         ("perlin-3d", "noise") => {
             let n = noise::Perlin::new(0);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    n.get([x as f64, y as f64, Z as f64]) as f32
-                })
-            })
+            l.peer3_f64(move |p| n.get(p))
+        }
+        ("perlin-4d", "noise") => {
+            let n = noise::Perlin::new(0);
+            l.peer4_f64(move |p| n.get(p))
         }
         ("value-2d", "noise") => {
             let n = noise::Value::new(0);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get([x as f64, y as f64]) as f32))
+            l.peer2_f64(move |p| n.get(p))
         }
         ("fbm6-perlin-3d", "noise") => {
             let n = noise::Fbm::<noise::Perlin>::new(0)
                 .set_octaves(6)
                 .set_lacunarity(2.0)
                 .set_persistence(0.5);
-            Box::new(move |rows, out| {
-                points2(rows, out, |x, y| {
-                    n.get([x as f64, y as f64, Z as f64]) as f32
-                })
-            })
+            l.peer3_f64(move |p| n.get(p))
         }
 
         ("perlin-2d", "fastnoise-lite") => {
             let n = fast(NoiseType::Perlin, None);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get_noise_2d(x, y)))
+            l.peer2(move |x, y| n.get_noise_2d(x, y))
         }
         ("perlin-3d", "fastnoise-lite") => {
             let n = fast(NoiseType::Perlin, None);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get_noise_3d(x, y, Z)))
+            l.peer2(move |x, y| n.get_noise_3d(x, y, Z))
         }
         ("value-2d", "fastnoise-lite") => {
             let n = fast(NoiseType::Value, None);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get_noise_2d(x, y)))
+            l.peer2(move |x, y| n.get_noise_2d(x, y))
         }
         ("fbm6-perlin-3d", "fastnoise-lite") => {
             let n = fast(NoiseType::Perlin, Some(6));
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.get_noise_3d(x, y, Z)))
+            l.peer2(move |x, y| n.get_noise_3d(x, y, Z))
         }
 
-        ("perlin-2d", "noise-functions") => Box::new(move |rows, out| {
-            points2(rows, out, |x, y| noise_functions::Perlin.sample2([x, y]))
-        }),
-        ("perlin-3d", "noise-functions") => Box::new(move |rows, out| {
-            points2(rows, out, |x, y| noise_functions::Perlin.sample3([x, y, Z]))
-        }),
-        ("value-2d", "noise-functions") => Box::new(move |rows, out| {
-            points2(rows, out, |x, y| noise_functions::Value.sample2([x, y]))
-        }),
+        ("perlin-2d", "noise-functions") => l.peer2(|x, y| noise_functions::Perlin.sample2([x, y])),
+        ("perlin-3d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::Perlin.sample3([x, y, Z]))
+        }
+        ("perlin-4d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::Perlin.sample4([x, y, Z, W]))
+        }
+        ("value-2d", "noise-functions") => l.peer2(|x, y| noise_functions::Value.sample2([x, y])),
         ("fbm6-perlin-3d", "noise-functions") => {
             let n = noise_functions::Perlin.fbm(6, 0.5, 2.0);
-            Box::new(move |rows, out| points2(rows, out, |x, y| n.sample3([x, y, Z])))
+            l.peer2(move |x, y| n.sample3([x, y, Z]))
         }
 
-        ("perlin-2d", "libnoise") => libnoise2(libnoise::Source::<2>::perlin(0)),
-        ("perlin-3d", "libnoise") => libnoise3(libnoise::Source::<3>::perlin(0)),
-        ("value-2d", "libnoise") => libnoise2(libnoise::Source::<2>::value(0)),
-        ("fbm6-perlin-3d", "libnoise") => libnoise3(libnoise::Generator::fbm(
-            libnoise::Source::<3>::perlin(0),
-            6,
-            1.0,
-            2.0,
-            0.5,
-        )),
+        ("perlin-2d", "libnoise") => {
+            let n = libnoise::Source::<2>::perlin(0);
+            l.peer2_f64(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("perlin-3d", "libnoise") => {
+            let n = libnoise::Source::<3>::perlin(0);
+            l.peer3_f64(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("perlin-4d", "libnoise") => {
+            let n = libnoise::Source::<4>::perlin(0);
+            l.peer4_f64(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("value-2d", "libnoise") => {
+            let n = libnoise::Source::<2>::value(0);
+            l.peer2_f64(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("fbm6-perlin-3d", "libnoise") => {
+            let n = libnoise::Generator::fbm(libnoise::Source::<3>::perlin(0), 6, 1.0, 2.0, 0.5);
+            l.peer3_f64(move |p| libnoise::Generator::sample(&n, p))
+        }
         _ => return None,
     };
     Some(run)

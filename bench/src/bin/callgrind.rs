@@ -1,13 +1,14 @@
 //! Runs one workload of the peer benchmark for `callgrind` instruction counts:
-//! `callgrind FUNCTION IMPLEMENTATION ROWS` fills `ROWS` rows of the 1024-wide grid.
+//! `callgrind FUNCTION IMPLEMENTATION ROWS [LAYOUT]` fills `ROWS` rows of the 1024-wide grid
+//! (`LAYOUT` one of the names of `LAYOUTS`, `sixteenth` if left out).
 //! `scripts/bench-peers.sh` runs it at two row counts and divides the difference by the extra
 //! samples, so start-up work cancels out.
 
-use bandnoise_bench::{N, workload};
+use bandnoise_bench::{LAYOUTS, N, layout, workload};
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let usage = "usage: callgrind FUNCTION IMPLEMENTATION ROWS";
+    let usage = "usage: callgrind FUNCTION IMPLEMENTATION ROWS [LAYOUT]";
     let (Some(function), Some(implementation), Some(rows)) =
         (args.get(1), args.get(2), args.get(3))
     else {
@@ -18,7 +19,12 @@ fn main() {
         eprintln!("{usage}: ROWS must be a number");
         std::process::exit(2);
     };
-    let Some(run) = workload(function, implementation) else {
+    let Some(layout) = args.get(4).map_or(Some(LAYOUTS[0]), |name| layout(name)) else {
+        let names: Vec<&str> = LAYOUTS.iter().map(|l| l.name).collect();
+        eprintln!("{usage}: LAYOUT is one of {names:?}");
+        std::process::exit(2);
+    };
+    let Some(run) = workload(function, implementation, layout) else {
         eprintln!("no workload {function} for {implementation}");
         std::process::exit(2);
     };
