@@ -57,14 +57,39 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
         assert_eq!(bits(*v), bits(noise.sample(p)), "{name} {D}D points: {p:?}");
     }
 
+    // Points along a row (the lanes' cells differ along axis 0 only, 1 to 4 of them): the
+    // column kernels of `sample_lanes`.
+    let origin: [f32; D] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0) as f32);
+    for step in [0.01f32, 0.06, 0.1, 0.13, 0.2] {
+        let axes: [Vec<R>; D] = core::array::from_fn(|a| {
+            (0..4 * LANES)
+                .map(|i| {
+                    R::from_f32(if a == 0 {
+                        origin[0] + i as f32 * step
+                    } else {
+                        origin[a]
+                    })
+                })
+                .collect()
+        });
+        let slices: [&[R]; D] = core::array::from_fn(|a| &axes[a][..]);
+        let mut out = vec![R::ZERO; 4 * LANES];
+        noise.fill_points(slices, &mut out).unwrap();
+        for (i, v) in out.iter().enumerate() {
+            let p: [R; D] = core::array::from_fn(|a| axes[a][i]);
+            assert_eq!(bits(*v), bits(noise.sample(p)), "{name} {D}D row: {p:?}");
+        }
+    }
+
     // Grids: a row that is not a multiple of LANES, a row shorter than LANES, a far origin, and
-    // rows of several blocks of chunks, with steps that put a chunk's lanes in several cells
-    // and, finer than 1/16, in one cell.
+    // rows of several blocks of chunks, with steps that put a chunk's lanes in many cells, in
+    // up to 3 (below 2/15 of a cell) and, finer than 1/16, in one or two.
     for (size0, far, max_step) in [
         (37, false, 0.7),
         (5, false, 0.7),
         (LANES, true, 0.7),
         (150, false, 0.7),
+        (150, false, 0.13),
         (150, false, 0.06),
     ] {
         let size: [usize; D] = core::array::from_fn(|a| if a == 0 { size0 } else { 3 });

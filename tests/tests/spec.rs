@@ -409,7 +409,7 @@ fn every_noise_type_in_core_is_described() {
                 {
                     line.rsplit(" for ").next().map(str::to_string)
                 } else {
-                    line.strip_prefix("gradient_noise_impls!(")
+                    line.strip_prefix("lattice_noise_impls!(")
                         .map(str::to_string)
                 };
                 if let Some(ty) = ty {

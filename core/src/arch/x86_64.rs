@@ -2,7 +2,7 @@
 //!
 //! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D and 3D, in
 //! `f32`: the axes split and faded together, and the 4 (2D) or 8 (3D) corner dot products and
-//! the lerps in 4-lane vectors. The point kernel of [`sample_gradient`] does the same steps one
+//! the lerps in 4-lane vectors. The point kernel of [`sample_lattice`] does the same steps one
 //! number at a time.
 //!
 //! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
@@ -11,11 +11,11 @@
 //! the vectors need no transposition.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
-//! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_gradient`] bit for
+//! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
 //! bit; a test compares them over random and edge-case points. The intrinsics are the safe
 //! wrappers of `safe_arch`, so the crate keeps `#![forbid(unsafe_code)]`.
 //!
-//! [`sample_gradient`]: crate::lattice
+//! [`sample_lattice`]: crate::lattice
 
 use safe_arch::{
     add_i32_m128i, add_m128, add_m128_s, bitor_m128, cast_to_m128_from_m128i,
@@ -294,7 +294,7 @@ fn finish(v: m128, t: m128) -> f32 {
 #[cfg(test)]
 mod tests {
     use super::{GradientPairs, Kernel, PAIR_ROWS, PerlinPairs};
-    use crate::lattice::{Perlin, sample_gradient};
+    use crate::lattice::{Perlin, sample_lattice};
 
     /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
     /// and in the range where noise is usually sampled, with the edge cases of `split`.
@@ -354,12 +354,12 @@ mod tests {
         };
         let mut vector_path = [0usize; 2];
         for [x, y, z] in points(200_000) {
-            let expected2: f32 = sample_gradient(perlin, [x, y]);
+            let expected2: f32 = sample_lattice(perlin, [x, y]);
             if let Some(v) = kernel.sample2(x, y) {
                 assert_eq!(v.to_bits(), expected2.to_bits(), "2D ({x}, {y})");
                 vector_path[0] += 1;
             }
-            let expected3: f32 = sample_gradient(perlin, [x, y, z]);
+            let expected3: f32 = sample_lattice(perlin, [x, y, z]);
             if let Some(v) = kernel.sample3(x, y, z) {
                 assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
                 vector_path[1] += 1;

@@ -7,9 +7,9 @@
 //! 3D hash at `z = 0` is the 2D hash too, which makes the noise *dimension reducible*:
 //! `noise3(x, y, 0) == noise2(x, y)`, bit for bit.
 
-use super::kernel::{MAX_CORNERS, Quintic};
+use super::kernel::{MAX_CORNERS, Quintic, sum_of_products};
 use super::periodic::WrapCorners;
-use super::{GradientLattice, gradient_noise_impls, half_dims, signed};
+use super::{Lattice, half_dims, lattice_noise_impls, signed};
 use crate::Real;
 use crate::batch::LANES;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
@@ -139,8 +139,9 @@ impl<const M: u32> Default for MNoise<M> {
     }
 }
 
-impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
+impl<const M: u32, const D: usize> Lattice<D> for MNoise<M> {
     type Fade = Quintic;
+    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let mut cells = [0u32; D];
@@ -174,6 +175,14 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
         )
     }
     #[inline]
+    fn corner<R: Real>(&self, h: u32) -> [R; D] {
+        self.gradient(h)
+    }
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
+        sum_of_products(d, g, R::mul_rn)
+    }
+    #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
         corner_dot(h ^ self.flip, d)
     }
@@ -183,7 +192,7 @@ impl<const M: u32, const D: usize> GradientLattice<D> for MNoise<M> {
     }
 }
 
-gradient_noise_impls!(MNoise<M>, [const M: u32], |_, d| half_dims(d));
+lattice_noise_impls!(MNoise<M>, [const M: u32], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(MNoise<M>, [const M: u32]);
 
 impl<const M: u32, const D: usize> WrapCorners<D> for MNoise<M> {
@@ -243,14 +252,23 @@ impl Default for CNoise {
     }
 }
 
-impl<const D: usize> GradientLattice<D> for CNoise {
+impl<const D: usize> Lattice<D> for CNoise {
     type Fade = Quintic;
+    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let (lower, upper) = chain::natural::<Permutation, D>(cell);
         chain::corners(Order::LastFirst, self.inner[D - 1], lower, upper, |h, c| {
             self.perm.step(h, c)
         })
+    }
+    #[inline]
+    fn corner<R: Real>(&self, h: u32) -> [R; D] {
+        self.gradient(h)
+    }
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
+        sum_of_products(d, g, R::mul_rn)
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
@@ -262,7 +280,7 @@ impl<const D: usize> GradientLattice<D> for CNoise {
     }
 }
 
-gradient_noise_impls!(CNoise, [], |_, d| half_dims(d));
+lattice_noise_impls!(CNoise, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(CNoise, []);
 
 impl<const D: usize> WrapCorners<D> for CNoise {

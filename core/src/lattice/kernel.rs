@@ -69,12 +69,6 @@ impl Fade for Cubic {
     }
 }
 
-/// Applies a fade curve to every fraction.
-#[inline]
-pub(crate) fn fade_all<F: Fade, R: Real, const D: usize>(f: [R; D]) -> [R; D] {
-    f.map(F::fade)
-}
-
 /// The offset from corner `m` to the point: `f − corner`.
 #[inline]
 pub(crate) fn corner_offset<R: Real, const D: usize>(f: &[R; D], f1: &[R; D], m: usize) -> [R; D] {

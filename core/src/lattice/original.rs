@@ -5,9 +5,9 @@
 //! unit ball, normalised, from SplitMix64), stored as `i16` with 14 fraction bits so every number
 //! type starts from the same gradients.
 
-use super::kernel::{Cubic, MAX_CORNERS};
+use super::kernel::{Cubic, MAX_CORNERS, sum_of_products};
 use super::periodic::WrapCorners;
-use super::{GradientLattice, gradient_noise_impls};
+use super::{Lattice, lattice_noise_impls};
 use crate::Real;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
 use crate::hash::{Permutation, seed::splitmix64};
@@ -125,24 +125,24 @@ impl Table<4> for OriginalPerlin {
     }
 }
 
-impl<const D: usize> GradientLattice<D> for OriginalPerlin
+impl<const D: usize> Lattice<D> for OriginalPerlin
 where
     OriginalPerlin: Table<D>,
 {
     type Fade = Cubic;
+    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let (lower, upper) = chain::natural::<Permutation, D>(cell);
         chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.perm.step(h, c))
     }
     #[inline]
-    fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
-        let g: [R; D] = self.gradient(h);
-        let mut sum = d[0].mul_rn(g[0]);
-        for a in 1..D {
-            sum = sum + d[a].mul_rn(g[a]);
-        }
-        sum
+    fn corner<R: Real>(&self, h: u32) -> [R; D] {
+        self.gradient(h)
+    }
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
+        sum_of_products(d, g, R::mul_rn)
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; D] {
@@ -154,7 +154,7 @@ fn sqrt_dims_half(dims: usize) -> f32 {
     libm::sqrtf(dims as f32) * 0.5 + super::ROUNDING
 }
 
-gradient_noise_impls!(OriginalPerlin, [], |_, d| sqrt_dims_half(d));
+lattice_noise_impls!(OriginalPerlin, [], |_, d| sqrt_dims_half(d));
 crate::noise::inherent_amplitude_bound!(OriginalPerlin, []);
 
 impl<const D: usize> WrapCorners<D> for OriginalPerlin {

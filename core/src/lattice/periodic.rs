@@ -16,8 +16,8 @@
 //! the 2D noise) and has no analytic gradient. A lattice wrap costs a remainder per axis, works
 //! in every dimension and for gradients and batches, but takes only integer periods in cells.
 
+use super::Lattice;
 use super::kernel::MAX_CORNERS;
-use super::{GradientLattice, ValueNoise};
 use crate::Error;
 use crate::hash::chain::Wrap;
 
@@ -111,69 +111,36 @@ impl<L: WrapCorners<D>, const D: usize> WrapCorners<D> for &L {
     }
 }
 
-impl<L: GradientLattice<D> + WrapCorners<D>, const D: usize> GradientLattice<D> for Periodic<L, D> {
+impl<L: Lattice<D> + WrapCorners<D>, const D: usize> Lattice<D> for Periodic<L, D> {
     type Fade = L::Fade;
+    type Corner<R: crate::Real> = L::Corner<R>;
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         self.noise.corner_hashes_wrapped(cell, &self.wrap)
     }
     #[inline]
-    fn dot<R: crate::Real>(&self, h: u32, d: &[R; D]) -> R {
-        self.noise.dot(h, d)
+    fn corner<R: crate::Real>(&self, h: u32) -> Self::Corner<R> {
+        self.noise.corner(h)
+    }
+    #[inline]
+    fn contribution<R: crate::Real>(&self, c: &Self::Corner<R>, d: &[R; D]) -> R {
+        self.noise.contribution(c, d)
     }
     #[inline]
     fn gradient<R: crate::Real>(&self, h: u32) -> [R; D] {
         self.noise.gradient(h)
     }
     #[inline]
-    fn dot_with<R: crate::Real>(&self, g: &[R; D], d: &[R; D]) -> R {
-        self.noise.dot_with(g, d)
+    fn dot<R: crate::Real>(&self, h: u32, d: &[R; D]) -> R {
+        self.noise.dot(h, d)
     }
 }
 
 // The bound of the noise wrapped: wrapping changes which gradients meet, not their range.
-super::gradient_noise_impls!(
+super::lattice_noise_impls!(
     Periodic<L, P>,
     [L: crate::Noise<R, D>, const P: usize],
     |n: &Self, _| crate::Noise::<R, D>::amplitude_bound(&n.noise)
 );
-
-/// Value noise is not a gradient lattice: its periodic form samples through its own corners,
-/// by value or by reference.
-macro_rules! periodic_value {
-    ($($v:ty),*) => {$(
-        impl<R: crate::Real, const D: usize> crate::Noise<R, D> for Periodic<$v, D> {
-            #[inline]
-            fn sample(&self, p: [R; D]) -> R {
-                self.noise
-                    .sample_corners(p, |cell| self.noise.corner_hashes_wrapped(cell, &self.wrap))
-            }
-            fn amplitude_bound(&self) -> f32 {
-                crate::Noise::<R, D>::amplitude_bound(&self.noise)
-            }
-            #[inline]
-            fn sample_lanes(
-                &self,
-                p: &[[R; crate::batch::LANES]; D],
-                out: &mut [R; crate::batch::LANES],
-            ) {
-                self.noise.sample_corners_lanes(p, out, |cell| {
-                    self.noise.corner_hashes_wrapped(cell, &self.wrap)
-                });
-            }
-        }
-
-        impl<R: crate::Real, const D: usize> crate::NoiseGradient<R, D> for Periodic<$v, D> {
-            #[inline]
-            fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-                self.noise.sample_corners_with_gradient(p, |cell| {
-                    self.noise.corner_hashes_wrapped(cell, &self.wrap)
-                })
-            }
-        }
-    )*};
-}
-
-periodic_value!(ValueNoise, &ValueNoise);
 
 crate::noise::inherent_amplitude_bound!(Periodic<N, P>, [N, const P: usize]);

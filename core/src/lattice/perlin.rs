@@ -10,7 +10,7 @@
 
 use super::kernel::{MAX_CORNERS, Quintic, sum_of_products};
 use super::periodic::WrapCorners;
-use super::{GradientLattice, gradient_noise_impls, half_dims, sample_gradient, signed};
+use super::{Lattice, half_dims, lattice_noise_impls, sample_lattice, signed};
 use crate::Real;
 use crate::arch;
 use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
@@ -105,13 +105,13 @@ fn sample_point<R: Real, const D: usize>(
     kernel: impl FnOnce([f32; D]) -> Option<f32>,
 ) -> R
 where
-    Perlin: GradientLattice<D>,
+    Perlin: Lattice<D>,
 {
     if has_vector_kernel::<R>() {
         let f = p.map(R::to_f32);
         return R::from_f32(kernel(f).unwrap_or_else(|| shared_kernel(perlin, f)));
     }
-    sample_gradient(perlin, p)
+    sample_lattice(perlin, p)
 }
 
 /// The shared kernel in `f32`, for the coordinates the vector kernel leaves to it (beyond ±2³¹,
@@ -121,9 +121,9 @@ where
 #[inline(never)]
 fn shared_kernel<const D: usize>(perlin: &Perlin, p: [f32; D]) -> f32
 where
-    Perlin: GradientLattice<D>,
+    Perlin: Lattice<D>,
 {
-    sample_gradient(perlin, p)
+    sample_lattice(perlin, p)
 }
 
 impl Default for Perlin {
@@ -210,27 +210,32 @@ impl core::fmt::Debug for TabledPerlin {
 /// `TabledPerlin` is `Perlin` in every method but the point kernels of 2D and 3D (`$point`).
 macro_rules! forward_to_perlin {
     ($d:literal $(, $point:ident)?) => {
-        impl GradientLattice<$d> for TabledPerlin {
+        impl Lattice<$d> for TabledPerlin {
             type Fade = Quintic;
             #[inline]
             fn corner_hashes(&self, cell: [i32; $d]) -> [u32; MAX_CORNERS] {
                 self.perlin.corners(cell)
             }
+            type Corner<R: Real> = [R; $d];
             #[inline]
-            fn dot<R: Real>(&self, h: u32, d: &[R; $d]) -> R {
-                GradientLattice::<$d>::dot(&self.perlin, h, d)
+            fn corner<R: Real>(&self, h: u32) -> [R; $d] {
+                Lattice::<$d>::corner(&self.perlin, h)
             }
             #[inline]
-            fn dot_with<R: Real>(&self, g: &[R; $d], d: &[R; $d]) -> R {
-                GradientLattice::<$d>::dot_with(&self.perlin, g, d)
+            fn contribution<R: Real>(&self, g: &[R; $d], d: &[R; $d]) -> R {
+                Lattice::<$d>::contribution(&self.perlin, g, d)
             }
             #[inline]
             fn gradient<R: Real>(&self, h: u32) -> [R; $d] {
-                GradientLattice::<$d>::gradient(&self.perlin, h)
+                Lattice::<$d>::gradient(&self.perlin, h)
+            }
+            #[inline]
+            fn dot<R: Real>(&self, h: u32, d: &[R; $d]) -> R {
+                Lattice::<$d>::dot(&self.perlin, h, d)
             }
             #[inline]
             fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
-                <Perlin as GradientLattice<$d>>::point_kernel_for_scattered_lanes::<R>()
+                <Perlin as Lattice<$d>>::point_kernel_for_scattered_lanes::<R>()
             }
             $(
                 #[inline]
@@ -265,7 +270,7 @@ forward_to_perlin!(1);
 forward_to_perlin!(2, paired2);
 forward_to_perlin!(3, paired3);
 forward_to_perlin!(4);
-gradient_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
+lattice_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(TabledPerlin, []);
 
 /// Perlin's reference `grad(hash, x, y, z)`, the definition [`GRAD3`] is checked against.
@@ -331,14 +336,19 @@ impl<R: Real> Grad3<R> {
     };
 }
 
-impl GradientLattice<1> for Perlin {
+impl Lattice<1> for Perlin {
     type Fade = Quintic;
     fn corner_hashes(&self, cell: [i32; 1]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
+    type Corner<R: Real> = [R; 1];
     #[inline]
-    fn dot<R: Real>(&self, h: u32, d: &[R; 1]) -> R {
-        d[0].mul_rn(<Self as GradientLattice<1>>::gradient::<R>(self, h)[0])
+    fn corner<R: Real>(&self, h: u32) -> [R; 1] {
+        self.gradient(h)
+    }
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; 1], d: &[R; 1]) -> R {
+        d[0].mul_rn(g[0])
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 1] {
@@ -346,7 +356,7 @@ impl GradientLattice<1> for Perlin {
     }
 }
 
-impl GradientLattice<2> for Perlin {
+impl Lattice<2> for Perlin {
     type Fade = Quintic;
     fn corner_hashes(&self, cell: [i32; 2]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
@@ -359,12 +369,13 @@ impl GradientLattice<2> for Perlin {
     fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
         has_vector_kernel::<R>()
     }
+    type Corner<R: Real> = [R; 2];
     #[inline]
-    fn dot<R: Real>(&self, h: u32, d: &[R; 2]) -> R {
-        self.dot_with(&self.gradient(h), d)
+    fn corner<R: Real>(&self, h: u32) -> [R; 2] {
+        self.gradient(h)
     }
     #[inline]
-    fn dot_with<R: Real>(&self, g: &[R; 2], d: &[R; 2]) -> R {
+    fn contribution<R: Real>(&self, g: &[R; 2], d: &[R; 2]) -> R {
         sum_of_products(d, g, R::mul_unit)
     }
     #[inline]
@@ -374,7 +385,7 @@ impl GradientLattice<2> for Perlin {
     }
 }
 
-impl GradientLattice<3> for Perlin {
+impl Lattice<3> for Perlin {
     type Fade = Quintic;
     fn corner_hashes(&self, cell: [i32; 3]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
@@ -387,12 +398,13 @@ impl GradientLattice<3> for Perlin {
     fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
         has_vector_kernel::<R>()
     }
+    type Corner<R: Real> = [R; 3];
     #[inline]
-    fn dot<R: Real>(&self, h: u32, d: &[R; 3]) -> R {
-        self.dot_with(&self.gradient(h), d)
+    fn corner<R: Real>(&self, h: u32) -> [R; 3] {
+        self.gradient(h)
     }
     #[inline]
-    fn dot_with<R: Real>(&self, g: &[R; 3], d: &[R; 3]) -> R {
+    fn contribution<R: Real>(&self, g: &[R; 3], d: &[R; 3]) -> R {
         sum_of_products(d, g, R::mul_unit)
     }
     #[inline]
@@ -401,10 +413,19 @@ impl GradientLattice<3> for Perlin {
     }
 }
 
-impl GradientLattice<4> for Perlin {
+impl Lattice<4> for Perlin {
     type Fade = Quintic;
+    type Corner<R: Real> = [R; 4];
     fn corner_hashes(&self, cell: [i32; 4]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
+    }
+    #[inline]
+    fn corner<R: Real>(&self, h: u32) -> [R; 4] {
+        self.gradient(h)
+    }
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; 4], d: &[R; 4]) -> R {
+        sum_of_products(d, g, R::mul_rn)
     }
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 4]) -> R {
@@ -435,7 +456,7 @@ impl GradientLattice<4> for Perlin {
     }
 }
 
-gradient_noise_impls!(Perlin, [], |_, d| half_dims(d));
+lattice_noise_impls!(Perlin, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(Perlin, []);
 
 #[cfg(test)]

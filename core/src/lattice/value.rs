@@ -5,15 +5,12 @@
 //! and visible grid structure (Lewis 1989 §2; Olano 2005 §2). It is here as the baseline the
 //! better noises are compared against.
 
-use super::kernel::{
-    Fade, MAX_CORNERS, Quintic, fade_all, interpolate, interpolate_with_gradient, split_point,
-};
+use super::kernel::{MAX_CORNERS, Quintic};
 use super::periodic::WrapCorners;
-use super::{interpolate_lanes, split_lanes};
-use crate::batch::{LANES, lane};
+use super::{Lattice, lattice_noise_impls};
+use crate::Real;
 use crate::hash::Permutation;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
-use crate::{Noise, NoiseGradient, Real};
 
 /// Value noise in 1 to 4 dimensions.
 ///
@@ -53,99 +50,32 @@ impl Default for ValueNoise {
     }
 }
 
-impl ValueNoise {
-    /// The lattice values' hashes at the corners of `cell` (Perlin's chain, axis 0 innermost).
+/// A value lattice: a corner contributes its value wherever the point is, and the gradient
+/// of a contribution is zero (the noise's gradient comes from the fade alone).
+impl<const D: usize> Lattice<D> for ValueNoise {
+    type Fade = Quintic;
+    type Corner<R: Real> = R;
+    /// Perlin's chain, axis 0 innermost.
     #[inline]
-    fn corners<const D: usize>(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
+    fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let (lower, upper) = chain::natural::<Permutation, D>(cell);
         chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.perm.step(h, c))
     }
-
-    /// The noise at `p` with the corners hashed by `corners` (the plain chain, or a wrapped
-    /// one for [`Periodic`](super::Periodic)).
     #[inline]
-    pub(super) fn sample_corners<R: Real, const D: usize>(
-        &self,
-        p: [R; D],
-        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
-    ) -> R {
-        let (cell, f) = split_point(p);
-        let h = corners(cell);
-        let mut v = [R::ZERO; MAX_CORNERS];
-        for m in 0..(1 << D) {
-            v[m] = R::from_ratio(2 * h[m] as i32 - 255, 8);
-        }
-        interpolate(v, &fade_all::<Quintic, R, D>(f)).canonical()
+    fn corner<R: Real>(&self, h: u32) -> R {
+        R::from_ratio(2 * h as i32 - 255, 8)
     }
-
-    /// [`sample_corners`](Self::sample_corners) and its analytic gradient: the lattice values
-    /// are constants, so `∂n/∂x_a = Σ_c ∂W_c/∂x_a v_c` (the fade's derivative). The value is the
-    /// same expression as `sample_corners`'.
     #[inline]
-    pub(super) fn sample_corners_with_gradient<R: Real, const D: usize>(
-        &self,
-        p: [R; D],
-        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
-    ) -> (R, [R; D]) {
-        let (cell, f) = split_point(p);
-        let h = corners(cell);
-        let mut v = [R::ZERO; MAX_CORNERS];
-        for m in 0..(1 << D) {
-            v[m] = R::from_ratio(2 * h[m] as i32 - 255, 8);
-        }
-        let s = fade_all::<Quintic, R, D>(f);
-        let ds = f.map(Quintic::fade_derivative);
-        interpolate_with_gradient(v, &[[R::ZERO; D]; MAX_CORNERS], &s, &ds)
+    fn contribution<R: Real>(&self, value: &R, _: &[R; D]) -> R {
+        *value
     }
-
-    /// [`sample_corners`](Self::sample_corners) over [`LANES`] points, bit-identical to it.
     #[inline]
-    #[allow(
-        clippy::needless_range_loop,
-        reason = "the lane index transposes: it addresses cells and corner values alike"
-    )]
-    pub(super) fn sample_corners_lanes<R: Real, const D: usize>(
-        &self,
-        p: &[[R; LANES]; D],
-        out: &mut [R; LANES],
-        corners: impl Fn([i32; D]) -> [u32; MAX_CORNERS],
-    ) {
-        let (cell, f) = split_lanes(p);
-        let mut v = [[R::ZERO; LANES]; MAX_CORNERS];
-        for l in 0..LANES {
-            let h = corners(lane(&cell, l));
-            for m in 0..(1 << D) {
-                v[m][l] = R::from_ratio(2 * h[m] as i32 - 255, 8);
-            }
-        }
-        interpolate_lanes(&mut v, &f.map(|fa| fa.map(Quintic::fade)));
-        *out = v[0].map(R::canonical);
+    fn gradient<R: Real>(&self, _: u32) -> [R; D] {
+        [R::ZERO; D]
     }
 }
 
-impl<R: Real, const D: usize> Noise<R, D> for ValueNoise {
-    #[inline]
-    fn sample(&self, p: [R; D]) -> R {
-        self.sample_corners(p, |cell| self.corners(cell))
-    }
-
-    fn amplitude_bound(&self) -> f32 {
-        255.0 / 256.0 + super::ROUNDING
-    }
-
-    #[inline]
-    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
-        self.sample_corners_lanes(p, out, |cell| self.corners(cell));
-    }
-}
-
-impl<R: Real, const D: usize> NoiseGradient<R, D> for ValueNoise {
-    #[inline]
-    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-        self.sample_corners_with_gradient(p, |cell| self.corners(cell))
-    }
-}
-
+lattice_noise_impls!(ValueNoise, [], |_, _| 255.0 / 256.0 + super::ROUNDING);
 crate::noise::inherent_amplitude_bound!(ValueNoise, []);
 
 impl<const D: usize> WrapCorners<D> for ValueNoise {
