@@ -264,13 +264,14 @@ fn column_lanes<L: Lattice<D>, R: Real, const D: usize, const K: usize>(
         }
     }
     blend::<R, D, LANES>(f, s, |m, l, d| {
-        let mut c = corners[0][m];
+        let mut v = lattice.contribution(&corners[0][m], d);
         for (k, ck) in corners.iter().enumerate().skip(1) {
+            let vk = lattice.contribution(&ck[m], d);
             if column.offset[l] == k as u32 {
-                c = ck[m];
+                v = vk;
             }
         }
-        lattice.contribution(&c, d)
+        v
     })
 }
 
