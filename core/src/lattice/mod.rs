@@ -67,7 +67,7 @@ pub(crate) trait Lattice<const D: usize> {
     /// or the corner's value.
     fn contribution<R: Real>(&self, c: &Self::Corner<R>, d: &[R; D]) -> R;
     /// The gradient of the contribution with respect to the point: the gradient vector of a
-    /// gradient noise, zero for a value noise (for [`sample_gradient_with_gradient`]).
+    /// gradient noise, zero for a value noise (for [`sample_lattice_with_gradient`]).
     fn gradient<R: Real>(&self, h: u32) -> [R; D];
 
     /// `contribution(corner(h), d)`, for a corner only one point uses. A lattice may override
