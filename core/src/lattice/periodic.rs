@@ -27,7 +27,7 @@ use crate::hash::chain::Wrap;
 /// and 8 along y: `sample([x + 16, y]) == sample([x, y + 8]) == sample([x, y])`, bit for bit in
 /// fixed point and wherever the shifted coordinate is exact in a float. It works for every
 /// lattice noise ([`Perlin`](super::Perlin), [`OriginalPerlin`](super::OriginalPerlin),
-/// [`ValueNoise`], [`CNoise`](super::CNoise), [`MNoise`](super::MNoise)), in point, gradient and
+/// [`ValueNoise`](super::ValueNoise), [`CNoise`](super::CNoise), [`MNoise`](super::MNoise)), in point, gradient and
 /// batch sampling, with the same bounds as the noise it wraps.
 ///
 /// A period equal to the noise's own (256 cells for the permutation noises, `M` for
