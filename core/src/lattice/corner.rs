@@ -7,9 +7,9 @@
 //! 3D hash at `z = 0` is the 2D hash too, which makes the noise *dimension reducible*:
 //! `noise3(x, y, 0) == noise2(x, y)`, bit for bit.
 
-use super::kernel::{MAX_CORNERS, Quintic, sum_of_products};
+use super::kernel::{MAX_CORNERS, Quintic};
 use super::periodic::WrapCorners;
-use super::{Lattice, half_dims, lattice_noise_impls, signed};
+use super::{Lattice, gradient_corners, half_dims, lattice_noise_impls, signed};
 use crate::Real;
 use crate::batch::LANES;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
@@ -141,7 +141,6 @@ impl<const M: u32> Default for MNoise<M> {
 
 impl<const M: u32, const D: usize> Lattice<D> for MNoise<M> {
     type Fade = Quintic;
-    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let mut cells = [0u32; D];
@@ -174,14 +173,7 @@ impl<const M: u32, const D: usize> Lattice<D> for MNoise<M> {
             |h, c| core::array::from_fn(|l| Bbs::<M>.step(h[l], c[l])),
         )
     }
-    #[inline]
-    fn corner<R: Real>(&self, h: u32) -> [R; D] {
-        self.gradient(h)
-    }
-    #[inline]
-    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
-        sum_of_products(d, g, R::mul_rn)
-    }
+    gradient_corners!(D, mul_rn);
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
         corner_dot(h ^ self.flip, d)
@@ -254,7 +246,6 @@ impl Default for CNoise {
 
 impl<const D: usize> Lattice<D> for CNoise {
     type Fade = Quintic;
-    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let (lower, upper) = chain::natural::<Permutation, D>(cell);
@@ -262,14 +253,7 @@ impl<const D: usize> Lattice<D> for CNoise {
             self.perm.step(h, c)
         })
     }
-    #[inline]
-    fn corner<R: Real>(&self, h: u32) -> [R; D] {
-        self.gradient(h)
-    }
-    #[inline]
-    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
-        sum_of_products(d, g, R::mul_rn)
-    }
+    gradient_corners!(D, mul_rn);
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; D]) -> R {
         corner_dot(h, d)

@@ -502,6 +502,24 @@ pub(crate) fn sample_lattice_with_gradient<L: Lattice<D>, R: Real, const D: usiz
     interpolate_with_gradient(dots, &grads, &s, &ds)
 }
 
+/// The corner items of a gradient lattice in `$d` dimensions: a corner is its gradient, and its
+/// contribution the dot product with the offset, exact products by `R::$mul` (`mul_unit` where
+/// every component is 0 or ±1 in every number type, `mul_rn` otherwise).
+macro_rules! gradient_corners {
+    ($d:tt, $mul:ident) => {
+        type Corner<R: crate::Real> = [R; $d];
+        #[inline]
+        fn corner<R: crate::Real>(&self, h: u32) -> [R; $d] {
+            self.gradient(h)
+        }
+        #[inline]
+        fn contribution<R: crate::Real>(&self, g: &[R; $d], d: &[R; $d]) -> R {
+            crate::lattice::kernel::sum_of_products(d, g, R::$mul)
+        }
+    };
+}
+pub(crate) use gradient_corners;
+
 /// Implements `Noise` and `NoiseGradient` for a lattice type, in every dimension it has a
 /// `Lattice` for. `$bound(&self, D)` is the amplitude bound.
 macro_rules! lattice_noise_impls {

@@ -5,9 +5,9 @@
 //! unit ball, normalised, from SplitMix64), stored as `i16` with 14 fraction bits so every number
 //! type starts from the same gradients.
 
-use super::kernel::{Cubic, MAX_CORNERS, sum_of_products};
+use super::kernel::{Cubic, MAX_CORNERS};
 use super::periodic::WrapCorners;
-use super::{Lattice, lattice_noise_impls};
+use super::{Lattice, gradient_corners, lattice_noise_impls};
 use crate::Real;
 use crate::hash::chain::{self, ChainHash, Order, Wrap};
 use crate::hash::{Permutation, seed::splitmix64};
@@ -130,20 +130,12 @@ where
     OriginalPerlin: Table<D>,
 {
     type Fade = Cubic;
-    type Corner<R: Real> = [R; D];
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
         let (lower, upper) = chain::natural::<Permutation, D>(cell);
         chain::corners(Order::XFirst, 0, lower, upper, |h, c| self.perm.step(h, c))
     }
-    #[inline]
-    fn corner<R: Real>(&self, h: u32) -> [R; D] {
-        self.gradient(h)
-    }
-    #[inline]
-    fn contribution<R: Real>(&self, g: &[R; D], d: &[R; D]) -> R {
-        sum_of_products(d, g, R::mul_rn)
-    }
+    gradient_corners!(D, mul_rn);
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; D] {
         <Self as Table<D>>::table()[(h & 255) as usize].map(|g| R::from_ratio(g as i32, Q))
