@@ -420,6 +420,11 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
             xk.s = xk.f.map(L::Fade::fade);
             xk.cells = Axis0Cells::of(&xk.cell);
         }
+        if x.iter().take(chunks).any(|xk| xk.cells.cells != 1) {
+            // Chunks that straddle cells: runs of columns aligned with the cells instead.
+            runs_of_block(lattice, grid, block, out);
+            continue;
+        }
         for row in 0..rows {
             let first = grid.row_start(row);
             // Axes 1..: (cell, fraction, faded fraction) of the row; axis 0 unused.
@@ -466,6 +471,170 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
         }
     }
     Ok(())
+}
+
+/// The shortest run of columns in one cell that [`runs_of_block`] samples on its own (16 lanes
+/// computed, the run's stored): below it, 16 lanes as a column of cells or scattered cost less
+/// per stored value.
+const MIN_RUN: usize = 7;
+
+/// Columns `start..start + len` of a block: in one cell (`one_cell`), or up to [`LANES`]
+/// columns that [`window_lanes`] samples.
+#[derive(Clone, Copy)]
+struct Run {
+    start: u8,
+    len: u8,
+    one_cell: bool,
+}
+
+/// The columns of a block.
+const BLOCK: usize = LANES * CHUNKS_PER_BLOCK;
+
+/// [`fill_grid_lattice`] for the block of columns from `block` when its chunks of 16 columns
+/// do not each lie in one cell (a step that is not a power-of-two fraction of a cell, an origin
+/// off the lattice): the block is cut into runs of columns in one cell, each sampled as 16
+/// lanes from its first column (the corners hashed once per row; the lanes past the run
+/// computed and dropped), and, where cells change faster than [`MIN_RUN`] columns, windows of
+/// 16 columns ([`window_lanes`]). Out of line, so that its code does not change how the
+/// compiler lays out the aligned blocks' loop.
+#[inline(never)]
+fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    grid: &Grid<R, D>,
+    block: usize,
+    out: &mut [R],
+) {
+    let width = grid.size[0];
+    let Some(columns) = width.checked_sub(block).map(|c| c.min(BLOCK)) else {
+        return;
+    };
+    let rows = out.len().checked_div(width).unwrap_or(0);
+    // One chunk of padding, so that a run starting anywhere in the block reads 16 lanes.
+    let mut cell = [0i32; BLOCK + LANES];
+    let mut fx = [R::ZERO; BLOCK + LANES];
+    let mut sx = [R::ZERO; BLOCK + LANES];
+    let chunks = columns.div_ceil(LANES) + 1;
+    for (k, ((ck, fk), sk)) in cell
+        .as_chunks_mut::<LANES>()
+        .0
+        .iter_mut()
+        .zip(fx.as_chunks_mut::<LANES>().0)
+        .zip(sx.as_chunks_mut::<LANES>().0)
+        .take(chunks)
+        .enumerate()
+    {
+        let x = core::array::from_fn(|l| grid.coordinate(0, block + k * LANES + l));
+        R::split_lanes(&x, ck, fk);
+        *sk = fk.map(L::Fade::fade);
+    }
+    let mut runs = [Run {
+        start: 0,
+        len: 0,
+        one_cell: false,
+    }; BLOCK];
+    let mut count = 0;
+    let mut i = 0;
+    while i < columns {
+        let Some(window) = lanes_at(&cell, i) else {
+            break;
+        };
+        let left = columns - i;
+        let lead = window.iter().take_while(|&&c| c == window[0]).count();
+        let run = if lead >= MIN_RUN.min(left) {
+            Run {
+                start: i as u8,
+                len: lead.min(left) as u8,
+                one_cell: true,
+            }
+        } else {
+            Run {
+                start: i as u8,
+                len: LANES.min(left) as u8,
+                one_cell: false,
+            }
+        };
+        i += run.len as usize;
+        if let Some(r) = runs.get_mut(count) {
+            *r = run;
+            count += 1;
+        }
+    }
+    for row in 0..rows {
+        let first = grid.row_start(row);
+        // Axes 1..: (cell, fraction, faded fraction) of the row; axis 0 unused.
+        let mut along = [(0i32, R::ZERO, R::ZERO); D];
+        for (a, along_a) in along.iter_mut().enumerate().skip(1) {
+            let (c, fa) = first[a].split();
+            *along_a = (c, fa, L::Fade::fade(fa));
+        }
+        for run in runs.iter().take(count) {
+            // At most BLOCK, so the windows are provably in the padded arrays.
+            let at = (run.start as usize).min(BLOCK);
+            let (Some(cw), Some(fw), Some(sw)) =
+                (lanes_at(&cell, at), lanes_at(&fx, at), lanes_at(&sx, at))
+            else {
+                continue;
+            };
+            let v = if run.one_cell {
+                let c = Column {
+                    first: core::array::from_fn(|a| if a == 0 { cw[0] } else { along[a].0 }),
+                    offset: &[0; LANES],
+                    cells: 1,
+                };
+                column_lanes::<L, R, D, 1>(
+                    lattice,
+                    &c,
+                    |a, l| if a == 0 { fw[l] } else { along[a].1 },
+                    |a, l| if a == 0 { sw[l] } else { along[a].2 },
+                )
+            } else {
+                window_lanes(lattice, cw, fw, sw, &along)
+            };
+            // In range by construction (`get_mut` keeps it provably panic-free).
+            let at = row * width + block + at;
+            if let Some(dst) = out.get_mut(at..at + run.len as usize) {
+                batch::store_lanes(dst, &v);
+            }
+        }
+    }
+}
+
+/// The [`LANES`] values of `v` from index `at`, as an array.
+#[inline]
+fn lanes_at<T>(v: &[T; BLOCK + LANES], at: usize) -> Option<&[T; LANES]> {
+    v.get(at..at + LANES)?.try_into().ok()
+}
+
+/// A window of 16 columns of a grid row whose cells change too often for runs: a column of up
+/// to 3 cells, or hashed lane by lane. Out of line, so that its code does not change how the
+/// compiler lays out the runs in one cell.
+#[inline(never)]
+fn window_lanes<L: Lattice<D>, R: Real, const D: usize>(
+    lattice: &L,
+    cell: &[i32; LANES],
+    f: &[R; LANES],
+    s: &[R; LANES],
+    along: &[(i32, R, R); D],
+) -> [R; LANES] {
+    let axis0 = Axis0Cells::of(cell);
+    if axis0.cells > 0 {
+        let c = Column {
+            first: core::array::from_fn(|a| if a == 0 { axis0.first } else { along[a].0 }),
+            offset: &axis0.offset,
+            cells: axis0.cells,
+        };
+        column(
+            lattice,
+            &c,
+            |a, l| if a == 0 { f[l] } else { along[a].1 },
+            |a, l| if a == 0 { s[l] } else { along[a].2 },
+        )
+    } else {
+        let cell = core::array::from_fn(|a| if a == 0 { *cell } else { [along[a].0; LANES] });
+        let f = core::array::from_fn(|a| if a == 0 { *f } else { [along[a].1; LANES] });
+        let s = core::array::from_fn(|a| if a == 0 { *s } else { [along[a].2; LANES] });
+        hashed_lanes(lattice, &cell, &f, &s)
+    }
 }
 
 /// [`split_point`] over lanes: cells and fractions, axis by axis.
