@@ -100,9 +100,8 @@ impl Layout {
     /// The grid of `rows` rows for bandnoise's batch path, in `D` dimensions (the axes past 1
     /// at [`Z`] and [`W`]).
     fn grid<const D: usize>(self, rows: usize) -> Grid<f32, D> {
-        let fixed = [Z, W];
         Grid::new(
-            core::array::from_fn(|a| if a < 2 { self.origin[a] } else { fixed[a - 2] }),
+            at::<D>(self.origin[0], self.origin[1]),
             core::array::from_fn(|a| if a < 2 { self.step } else { 0.0 }),
             core::array::from_fn(|a| match a {
                 0 => N,
@@ -120,16 +119,9 @@ impl Layout {
         })
     }
 
-    fn point2<No: Noise<f32, 2> + 'static>(self, noise: No) -> Run {
-        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y])))
-    }
-
-    fn point3<No: Noise<f32, 3> + 'static>(self, noise: No) -> Run {
-        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y, Z])))
-    }
-
-    fn point4<No: Noise<f32, 4> + 'static>(self, noise: No) -> Run {
-        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample([x, y, Z, W])))
+    /// Point evaluation of `noise` over the grid, in `D` dimensions.
+    fn point<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
+        Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample(at::<D>(x, y))))
     }
 
     /// A peer's 2D function of `f32` coordinates.
@@ -137,26 +129,18 @@ impl Layout {
         Box::new(move |rows, out| self.points(rows, out, &f))
     }
 
-    /// A peer's 2D function of `f64` coordinates (`noise`, `libnoise`).
-    fn peer2_f64(self, f: impl Fn([f64; 2]) -> f64 + 'static) -> Run {
-        Box::new(move |rows, out| self.points(rows, out, |x, y| f([x as f64, y as f64]) as f32))
-    }
-
-    /// A peer's 3D function of `f64` coordinates, on the plane `z = Z`.
-    fn peer3_f64(self, f: impl Fn([f64; 3]) -> f64 + 'static) -> Run {
+    /// A peer's function of `f64` coordinates in `D` dimensions (`noise`, `libnoise`).
+    fn peer_f64<const D: usize>(self, f: impl Fn([f64; D]) -> f64 + 'static) -> Run {
         Box::new(move |rows, out| {
-            self.points(rows, out, |x, y| f([x as f64, y as f64, Z as f64]) as f32)
+            self.points(rows, out, |x, y| f(at::<D>(x, y).map(f64::from)) as f32)
         })
     }
+}
 
-    /// A peer's 4D function of `f64` coordinates, on the plane `z = Z`, `w = W`.
-    fn peer4_f64(self, f: impl Fn([f64; 4]) -> f64 + 'static) -> Run {
-        Box::new(move |rows, out| {
-            self.points(rows, out, |x, y| {
-                f([x as f64, y as f64, Z as f64, W as f64]) as f32
-            })
-        })
-    }
+/// The point `(x, y)` of a grid row in `D` dimensions: the axes past 1 at [`Z`] and [`W`].
+fn at<const D: usize>(x: f32, y: f32) -> [f32; D] {
+    let p = [x, y, Z, W];
+    core::array::from_fn(|a| p[a])
 }
 
 /// The workload `function` by `implementation` on `layout`, if that implementation has it.
@@ -179,51 +163,51 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
     let fbm = || Fractal::fbm(Perlin::new(0), Octaves::new(6, 2.0, 0.5).unwrap());
     let l = layout;
     let run: Run = match (function, implementation) {
-        ("perlin-2d", "bandnoise") => l.point2(Perlin::new(0)),
+        ("perlin-2d", "bandnoise") => l.point::<_, 2>(Perlin::new(0)),
         ("perlin-2d", "bandnoise-batch") => l.batch::<_, 2>(Perlin::new(0)),
-        ("perlin-3d", "bandnoise") => l.point3(Perlin::new(0)),
+        ("perlin-3d", "bandnoise") => l.point::<_, 3>(Perlin::new(0)),
         ("perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(Perlin::new(0)),
-        ("perlin-4d", "bandnoise") => l.point4(Perlin::new(0)),
+        ("perlin-4d", "bandnoise") => l.point::<_, 4>(Perlin::new(0)),
         ("perlin-4d", "bandnoise-batch") => l.batch::<_, 4>(Perlin::new(0)),
-        ("tabled-perlin-2d", "bandnoise") => l.point2(TabledPerlin::new(0)),
+        ("tabled-perlin-2d", "bandnoise") => l.point::<_, 2>(TabledPerlin::new(0)),
         ("tabled-perlin-2d", "bandnoise-batch") => l.batch::<_, 2>(TabledPerlin::new(0)),
-        ("tabled-perlin-3d", "bandnoise") => l.point3(TabledPerlin::new(0)),
+        ("tabled-perlin-3d", "bandnoise") => l.point::<_, 3>(TabledPerlin::new(0)),
         ("tabled-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(TabledPerlin::new(0)),
-        ("mnoise-2d", "bandnoise") => l.point2(MNoise::new(0)),
+        ("mnoise-2d", "bandnoise") => l.point::<_, 2>(MNoise::new(0)),
         ("mnoise-2d", "bandnoise-batch") => l.batch::<_, 2>(MNoise::new(0)),
-        ("mnoise-3d", "bandnoise") => l.point3(MNoise::new(0)),
+        ("mnoise-3d", "bandnoise") => l.point::<_, 3>(MNoise::new(0)),
         ("mnoise-3d", "bandnoise-batch") => l.batch::<_, 3>(MNoise::new(0)),
-        ("value-2d", "bandnoise") => l.point2(ValueNoise::new(0)),
+        ("value-2d", "bandnoise") => l.point::<_, 2>(ValueNoise::new(0)),
         ("value-2d", "bandnoise-batch") => l.batch::<_, 2>(ValueNoise::new(0)),
-        ("wavelet-2d", "bandnoise") => l.point2(Wavelet::new(0, &TILE2)),
+        ("wavelet-2d", "bandnoise") => l.point::<_, 2>(Wavelet::new(0, &TILE2)),
         ("wavelet-2d", "bandnoise-batch") => l.batch::<_, 2>(Wavelet::new(0, &TILE2)),
-        ("wavelet-3d", "bandnoise") => l.point3(Wavelet::new(0, &TILE3)),
+        ("wavelet-3d", "bandnoise") => l.point::<_, 3>(Wavelet::new(0, &TILE3)),
         ("wavelet-3d", "bandnoise-batch") => l.batch::<_, 3>(Wavelet::new(0, &TILE3)),
-        ("fbm6-perlin-3d", "bandnoise") => l.point3(fbm()),
+        ("fbm6-perlin-3d", "bandnoise") => l.point::<_, 3>(fbm()),
         ("fbm6-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(fbm()),
 
         ("perlin-2d", "noise") => {
             let n = noise::Perlin::new(0);
-            l.peer2_f64(move |p| n.get(p))
+            l.peer_f64::<2>(move |p| n.get(p))
         }
         ("perlin-3d", "noise") => {
             let n = noise::Perlin::new(0);
-            l.peer3_f64(move |p| n.get(p))
+            l.peer_f64::<3>(move |p| n.get(p))
         }
         ("perlin-4d", "noise") => {
             let n = noise::Perlin::new(0);
-            l.peer4_f64(move |p| n.get(p))
+            l.peer_f64::<4>(move |p| n.get(p))
         }
         ("value-2d", "noise") => {
             let n = noise::Value::new(0);
-            l.peer2_f64(move |p| n.get(p))
+            l.peer_f64::<2>(move |p| n.get(p))
         }
         ("fbm6-perlin-3d", "noise") => {
             let n = noise::Fbm::<noise::Perlin>::new(0)
                 .set_octaves(6)
                 .set_lacunarity(2.0)
                 .set_persistence(0.5);
-            l.peer3_f64(move |p| n.get(p))
+            l.peer_f64::<3>(move |p| n.get(p))
         }
 
         ("perlin-2d", "fastnoise-lite") => {
@@ -258,23 +242,23 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
 
         ("perlin-2d", "libnoise") => {
             let n = libnoise::Source::<2>::perlin(0);
-            l.peer2_f64(move |p| libnoise::Generator::sample(&n, p))
+            l.peer_f64::<2>(move |p| libnoise::Generator::sample(&n, p))
         }
         ("perlin-3d", "libnoise") => {
             let n = libnoise::Source::<3>::perlin(0);
-            l.peer3_f64(move |p| libnoise::Generator::sample(&n, p))
+            l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
         }
         ("perlin-4d", "libnoise") => {
             let n = libnoise::Source::<4>::perlin(0);
-            l.peer4_f64(move |p| libnoise::Generator::sample(&n, p))
+            l.peer_f64::<4>(move |p| libnoise::Generator::sample(&n, p))
         }
         ("value-2d", "libnoise") => {
             let n = libnoise::Source::<2>::value(0);
-            l.peer2_f64(move |p| libnoise::Generator::sample(&n, p))
+            l.peer_f64::<2>(move |p| libnoise::Generator::sample(&n, p))
         }
         ("fbm6-perlin-3d", "libnoise") => {
             let n = libnoise::Generator::fbm(libnoise::Source::<3>::perlin(0), 6, 1.0, 2.0, 0.5);
-            l.peer3_f64(move |p| libnoise::Generator::sample(&n, p))
+            l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
         }
         _ => return None,
     };

@@ -83,24 +83,35 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
 
     // Grids: a row that is not a multiple of LANES, a row shorter than LANES, a far origin, and
     // rows of several blocks of chunks, with steps that put a chunk's lanes in many cells, in
-    // up to 3 (below 2/15 of a cell) and, finer than 1/16, in one or two.
-    for (size0, far, max_step) in [
-        (37, false, 0.7),
-        (5, false, 0.7),
-        (LANES, true, 0.7),
-        (150, false, 0.7),
-        (150, false, 0.13),
-        (150, false, 0.06),
+    // up to 3 (below 2/15 of a cell) and, finer than 1/16, in one or two; and rows aligned with
+    // the cells (origin on the lattice along axis 0, a step of 1/16 or 1/32: every chunk in one
+    // cell), which take the chunk loop rather than runs.
+    for (size0, far, max_step, aligned) in [
+        (37, false, 0.7, None),
+        (5, false, 0.7, None),
+        (LANES, true, 0.7, None),
+        (150, false, 0.7, None),
+        (150, false, 0.13, None),
+        (150, false, 0.06, None),
+        (300, false, 0.3, Some(1.0 / 16.0)),
+        (150, false, 0.3, Some(-1.0 / 32.0)),
     ] {
         let size: [usize; D] = core::array::from_fn(|a| if a == 0 { size0 } else { 3 });
-        let origin = core::array::from_fn(|_| {
+        let origin = core::array::from_fn(|a| {
             R::from_f32(if far {
                 coordinate(rng)
+            } else if aligned.is_some() && a == 0 {
+                rng.f64_in(-100.0, 100.0).round() as f32
             } else {
                 rng.f64_in(-100.0, 100.0) as f32
             })
         });
-        let step = core::array::from_fn(|_| R::from_f32(rng.f64_in(-max_step, max_step) as f32));
+        let step = core::array::from_fn(|a| {
+            R::from_f32(match aligned {
+                Some(step) if a == 0 => step,
+                _ => rng.f64_in(-max_step, max_step) as f32,
+            })
+        });
         let grid = Grid::new(origin, step, size);
         let mut out = vec![R::ZERO; grid.len()];
         noise.fill_grid(&grid, &mut out).unwrap();

@@ -293,7 +293,7 @@ fn column<L: Lattice<D>, R: Real, const D: usize>(
 
 /// [`column_lanes`] for a column of 2 or more cells. Out of line, so that its code does not
 /// change how the compiler lays out the one-cell path around it (inlined, with the dispatch on
-/// the number of cells, it cost the 2D grid kernel 0.8 instructions per sample).
+/// the number of cells, it cost the one-cell path instructions: `bench/README.md`).
 #[inline(never)]
 fn several_cells<L: Lattice<D>, R: Real, const D: usize>(
     lattice: &L,
@@ -376,25 +376,25 @@ pub(crate) fn sample_lattice_lanes<L: Lattice<D>, R: Real, const D: usize>(
 
 /// Chunks of [`LANES`] columns that [`fill_grid_lattice`] takes through the rows together, so
 /// that each row's split and fade along the axes other than 0, and its dispatch, serve all of
-/// them. 8 rather than 4 saves about half an instruction per sample (2D, x86-64, callgrind);
-/// the block's axis-0 data is then 8 · 276 bytes of stack in `f32` and I16F16.
+/// them (8 rather than 4: fewer instructions per sample, `bench/README.md`); the block's
+/// axis-0 data is then 8 · 192 bytes of stack in `f32` and I16F16.
 const CHUNKS_PER_BLOCK: usize = 8;
 
-/// Axis 0 of one chunk of a grid: every lane's cell, fraction and faded fraction,
-/// and the cells as a column takes them.
+/// Axis 0 of one chunk of a grid: every lane's cell, fraction and faded fraction.
 #[derive(Clone, Copy)]
 struct ChunkAxis0<R> {
     cell: [i32; LANES],
     f: [R; LANES],
     s: [R; LANES],
-    cells: Axis0Cells,
 }
 
 /// [`Noise::fill_grid`](crate::Noise::fill_grid) for a lattice: blocks of
 /// [`CHUNKS_PER_BLOCK`] column chunks of [`LANES`] points outermost, so each chunk's split and
 /// fade along axis 0 serve every row; the other axes, constant along a row, are split and faded
-/// once per row and block. The values are those of [`sample_lattice_lanes`] (the same
-/// operations on the same numbers).
+/// once per row and block ([`row_axes`]). A block whose chunks each lie in one cell (a grid of
+/// 16 or more samples per cell, aligned with the cells) is taken chunk by chunk, each chunk's
+/// corners hashed once per row; any other block goes to [`runs_of_block`]. The values are
+/// those of [`sample_lattice_lanes`] (the same operations on the same numbers).
 pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
     lattice: &L,
     grid: &Grid<R, D>,
@@ -412,56 +412,35 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
             cell: [0; LANES],
             f: [R::ZERO; LANES],
             s: [R::ZERO; LANES],
-            cells: Axis0Cells::of(&[0; LANES]),
         }; CHUNKS_PER_BLOCK];
         for (k, xk) in x.iter_mut().enumerate().take(chunks) {
             let x = core::array::from_fn(|l| grid.coordinate(0, block + k * LANES + l));
             R::split_lanes(&x, &mut xk.cell, &mut xk.f);
             xk.s = xk.f.map(L::Fade::fade);
-            xk.cells = Axis0Cells::of(&xk.cell);
         }
-        if x.iter().take(chunks).any(|xk| xk.cells.cells != 1) {
-            // Chunks that straddle cells: runs of columns aligned with the cells instead.
+        let aligned = x
+            .iter()
+            .take(chunks)
+            .all(|xk| xk.cell.iter().all(|&c| c == xk.cell[0]));
+        if !aligned {
+            // Chunks that straddle cells: runs of columns aligned with the cells instead
+            // (their own split of the block, once per block: the chunk loop below is faster
+            // over these per-chunk arrays than over the runs' padded ones).
             runs_of_block(lattice, grid, block, out);
             continue;
         }
         for row in 0..rows {
-            let first = grid.row_start(row);
-            // Axes 1..: (cell, fraction, faded fraction) of the row; axis 0 unused.
-            let mut along = [(0i32, R::ZERO, R::ZERO); D];
-            for (a, along_a) in along.iter_mut().enumerate().skip(1) {
-                let (c, fa) = first[a].split();
-                *along_a = (c, fa, L::Fade::fade(fa));
-            }
+            let along = row_axes::<L, R, D>(grid, row);
             for (k, xk) in x.iter().enumerate().take(chunks) {
                 let start = block + k * LANES;
                 let f = |a: usize, l| if a == 0 { xk.f[l] } else { along[a].1 };
                 let s = |a: usize, l| if a == 0 { xk.s[l] } else { along[a].2 };
-                let c = || Column {
-                    first: core::array::from_fn(
-                        |a| if a == 0 { xk.cells.first } else { along[a].0 },
-                    ),
-                    offset: &xk.cells.offset,
-                    cells: xk.cells.cells,
+                let c = Column {
+                    first: core::array::from_fn(|a| if a == 0 { xk.cell[0] } else { along[a].0 }),
+                    offset: &[0; LANES],
+                    cells: 1,
                 };
-                let v = if xk.cells.cells == 1 {
-                    column_lanes::<L, R, D, 1>(lattice, &c(), f, s)
-                } else if xk.cells.cells > 1 {
-                    several_cells(lattice, &c(), f, s)
-                } else {
-                    // Too many cells for a column: the lanes as sample_lanes would take them,
-                    // but hashed (the point kernel would inline here and cost the column path
-                    // more than it saves).
-                    let cell =
-                        core::array::from_fn(
-                            |a| if a == 0 { xk.cell } else { [along[a].0; LANES] },
-                        );
-                    let f =
-                        core::array::from_fn(|a| if a == 0 { xk.f } else { [along[a].1; LANES] });
-                    let s =
-                        core::array::from_fn(|a| if a == 0 { xk.s } else { [along[a].2; LANES] });
-                    hashed_lanes(lattice, &cell, &f, &s)
-                };
+                let v = column_lanes::<L, R, D, 1>(lattice, &c, f, s);
                 // In range by construction (`get_mut` keeps it provably panic-free).
                 let at = row * width + start;
                 if let Some(dst) = out.get_mut(at..at + LANES.min(width - start)) {
@@ -471,6 +450,22 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
         }
     }
     Ok(())
+}
+
+/// Axes 1.. of grid row `row`: (cell, fraction, faded fraction), the same for every point of
+/// the row; axis 0 unused.
+#[inline]
+fn row_axes<L: Lattice<D>, R: Real, const D: usize>(
+    grid: &Grid<R, D>,
+    row: usize,
+) -> [(i32, R, R); D] {
+    let first = grid.row_start(row);
+    let mut along = [(0i32, R::ZERO, R::ZERO); D];
+    for (a, along_a) in along.iter_mut().enumerate().skip(1) {
+        let (c, fa) = first[a].split();
+        *along_a = (c, fa, L::Fade::fade(fa));
+    }
+    along
 }
 
 /// The shortest run of columns in one cell that [`runs_of_block`] samples on its own (16 lanes
@@ -560,13 +555,7 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
         }
     }
     for row in 0..rows {
-        let first = grid.row_start(row);
-        // Axes 1..: (cell, fraction, faded fraction) of the row; axis 0 unused.
-        let mut along = [(0i32, R::ZERO, R::ZERO); D];
-        for (a, along_a) in along.iter_mut().enumerate().skip(1) {
-            let (c, fa) = first[a].split();
-            *along_a = (c, fa, L::Fade::fade(fa));
-        }
+        let along = row_axes::<L, R, D>(grid, row);
         for run in runs.iter().take(count) {
             // At most BLOCK, so the windows are provably in the padded arrays.
             let at = (run.start as usize).min(BLOCK);
