@@ -25,6 +25,8 @@ step "core builds for every target"
 for target in thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf wasm32-unknown-unknown; do
     cargo build -p bandnoise --release --target "$target"
 done
+# The optional serde feature stays no_std and allocation-free.
+cargo build -p bandnoise --release --target thumbv6m-none-eabi --features serde
 
 step "benchmarks compile and run once"
 cargo bench -p bandnoise-tests --bench lattice -- --test

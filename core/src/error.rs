@@ -67,6 +67,8 @@ pub enum Error {
     NotPeriodic(&'static str),
     /// A wavelet setting (the tiling) asked for another noise.
     NotWavelet(&'static str),
+    /// A multiband setting (bands, distribution) asked for another noise.
+    NotMultiband(&'static str),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -116,6 +118,12 @@ impl fmt::Display for Error {
                 "{noise} noise is not a lattice noise and cannot be wrapped to a period"
             ),
             Error::NotWavelet(noise) => write!(f, "{noise} noise has no wavelet tiling"),
+            Error::NotMultiband(noise) => {
+                write!(
+                    f,
+                    "{noise} noise has no bands or distribution (multiband only)"
+                )
+            }
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")
             }

@@ -17,6 +17,7 @@
 //! ```text
 //! perlin seed=7 period=16,16 fbm octaves=6 lacunarity=2 gain=0.5
 //! wavelet seed=3 tiling=periodic
+//! multiband seed=5 first=-1 bands=0.5,1,0.5 distribution=uniform
 //! mnoise seed=1 ridged octaves=4 lacunarity=1.99 gain=0.5
 //! ```
 //!
@@ -24,7 +25,10 @@
 //! |---|---|---|
 //! | `seed=` | `0..=4294967295` | 0 |
 //! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice noises) | not periodic |
-//! | `tiling=` | `varied` or `periodic` (wavelet noise, [`Tiling`]) | `varied` |
+//! | `tiling=` | `varied` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `varied` |
+//! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
+//! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
+//! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
 //!
@@ -72,7 +76,10 @@ use core::str::FromStr;
 use crate::batch::{Grid, LANES};
 use crate::fractal::{Fractal, Kind, Octaves};
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
-use crate::wavelet::{TILE2, TILE3, Tile2, Tile3, Tiling, Wavelet};
+use crate::wavelet::{
+    Bands, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3, TILE2, TILE2_I16,
+    TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
+};
 use crate::{Error, Noise, NoiseGradient, Real};
 
 /// The noise a [`Spec`] starts from.
@@ -94,14 +101,16 @@ pub enum Base {
     MNoise,
     /// [`MNoise<4093>`](MNoise): the largest modulus exact in `f32`, 1D–4D. Text: `mnoise4093`.
     MNoise4093,
-    /// [`Wavelet`]: one band over the default tile ([`TILE2`] in 2D, [`TILE3`] in 3D).
-    /// Text: `wavelet`.
+    /// [`Wavelet`]: one band over a [`Tiles`] set's tile (by default [`TILE2`] in 2D,
+    /// [`TILE3`] in 3D), 2D and 3D. Text: `wavelet`.
     Wavelet,
+    /// [`Multiband`] wavelet noise over the same tiles, 2D and 3D. Text: `multiband`.
+    Multiband,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 7] = [
+    pub const ALL: [Base; 8] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -109,6 +118,7 @@ impl Base {
         Base::MNoise,
         Base::MNoise4093,
         Base::Wavelet,
+        Base::Multiband,
     ];
 
     /// The name in the text form.
@@ -122,6 +132,7 @@ impl Base {
             Base::MNoise => "mnoise",
             Base::MNoise4093 => "mnoise4093",
             Base::Wavelet => "wavelet",
+            Base::Multiband => "multiband",
         }
     }
 
@@ -129,7 +140,7 @@ impl Base {
     #[must_use]
     pub const fn has_dimension(self, dims: usize) -> bool {
         match self {
-            Base::Wavelet => dims == 2 || dims == 3,
+            Base::Wavelet | Base::Multiband => dims == 2 || dims == 3,
             _ => dims >= 1 && dims <= 4,
         }
     }
@@ -137,7 +148,13 @@ impl Base {
     /// Whether the noise can be wrapped by [`Periodic`] (the lattice noises).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !matches!(self, Base::Wavelet)
+        !self.is_wavelet()
+    }
+
+    /// Whether the noise reads a wavelet tile (and has a [`Tiling`]).
+    #[must_use]
+    pub const fn is_wavelet(self) -> bool {
+        matches!(self, Base::Wavelet | Base::Multiband)
     }
 }
 
@@ -148,7 +165,7 @@ impl fmt::Display for Base {
 }
 
 /// A noise as a value (module docs): a [`Base`] and its seed, an optional period per axis,
-/// the wavelet tiling, and an optional fractal sum.
+/// the wavelet tiling, multiband noise's bands and distribution, and an optional fractal sum.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spec {
     base: Base,
@@ -157,8 +174,28 @@ pub struct Spec {
     period: [u32; 4],
     axes: u8,
     tiling: Tiling,
+    /// Multiband noise's bands (validated by [`Bands::new`]): the first band and the first
+    /// `band_count` weights; [`Bands::default`] for every other base.
+    first_band: i32,
+    weights: [f32; MAX_BANDS],
+    band_count: u8,
+    distribution: Distribution,
     fractal: Option<(Kind, Octaves)>,
 }
+
+/// [`Bands::default`] as a spec stores it (`const`, which [`Bands::default`] is not).
+const DEFAULT_WEIGHTS: [f32; MAX_BANDS] = {
+    let mut w = [0.0; MAX_BANDS];
+    let mut i = 0;
+    let mut a = 1.0;
+    while i < DEFAULT_BAND_COUNT {
+        w[i] = a;
+        a *= 0.5;
+        i += 1;
+    }
+    w
+};
+const DEFAULT_BAND_COUNT: usize = 5;
 
 impl Spec {
     /// `base` with `seed`, no period, the default tiling and no fractal sum.
@@ -170,6 +207,10 @@ impl Spec {
             period: [0; 4],
             axes: 0,
             tiling: Tiling::Varied,
+            first_band: 0,
+            weights: DEFAULT_WEIGHTS,
+            band_count: DEFAULT_BAND_COUNT as u8,
+            distribution: Distribution::Gaussian,
             fractal: None,
         }
     }
@@ -208,12 +249,43 @@ impl Spec {
     ///
     /// # Errors
     ///
-    /// [`Error::NotWavelet`] unless the base is [`Base::Wavelet`].
+    /// [`Error::NotWavelet`] unless the base is [`Base::Wavelet`] or [`Base::Multiband`].
     pub fn with_tiling(mut self, tiling: Tiling) -> Result<Self, Error> {
-        if self.base != Base::Wavelet {
+        if !self.base.is_wavelet() {
             return Err(Error::NotWavelet(self.base.name()));
         }
         self.tiling = tiling;
+        Ok(self)
+    }
+
+    /// The same multiband noise with `bands`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotMultiband`] unless the base is [`Base::Multiband`].
+    pub fn with_bands(mut self, bands: &Bands) -> Result<Self, Error> {
+        if self.base != Base::Multiband {
+            return Err(Error::NotMultiband(self.base.name()));
+        }
+        self.first_band = bands.first();
+        self.weights = [0.0; MAX_BANDS];
+        for (w, b) in self.weights.iter_mut().zip(bands.weights()) {
+            *w = *b;
+        }
+        self.band_count = bands.weights().len() as u8;
+        Ok(self)
+    }
+
+    /// The same multiband noise with values of `distribution`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotMultiband`] unless the base is [`Base::Multiband`].
+    pub fn with_distribution(mut self, distribution: Distribution) -> Result<Self, Error> {
+        if self.base != Base::Multiband {
+            return Err(Error::NotMultiband(self.base.name()));
+        }
+        self.distribution = distribution;
         Ok(self)
     }
 
@@ -245,10 +317,24 @@ impl Spec {
         }
     }
 
-    /// The wavelet tiling (only meaningful for [`Base::Wavelet`]).
+    /// The wavelet tiling (only meaningful for [`Base::Wavelet`] and [`Base::Multiband`]).
     #[must_use]
     pub const fn tiling(&self) -> Tiling {
         self.tiling
+    }
+
+    /// Multiband noise's bands ([`Bands::default`] for the other bases).
+    #[must_use]
+    pub fn bands(&self) -> Bands {
+        let weights = self.weights.get(..usize::from(self.band_count));
+        // Validated when they were set: never the default for a multiband spec.
+        Bands::new(self.first_band, weights.unwrap_or(&[])).unwrap_or_default()
+    }
+
+    /// Multiband noise's distribution ([`Distribution::Gaussian`] for the other bases).
+    #[must_use]
+    pub const fn distribution(&self) -> Distribution {
+        self.distribution
     }
 
     /// The fractal sum, if any.
@@ -257,13 +343,24 @@ impl Spec {
         self.fractal
     }
 
-    /// The noise this describes, in `D` dimensions.
+    /// The noise this describes, in `D` dimensions, with the default (`f32`) wavelet tiles.
     ///
     /// # Errors
     ///
     /// [`Error::Dimension`] when the base has no `D`-dimensional form (wavelet noise is 2D or
     /// 3D); [`Error::PeriodAxes`] when a period is given for other than `D` axes.
     pub fn build<const D: usize>(&self) -> Result<SpecNoise<D>, Error> {
+        self.build_with::<D, F32Tiles>()
+    }
+
+    /// The noise this describes, in `D` dimensions, with the wavelet tiles of `S`: firmware
+    /// passes [`I16Tiles`] (72 KiB rather than 144 KiB of coefficients), and only the tiles
+    /// of `S` are linked in.
+    ///
+    /// # Errors
+    ///
+    /// As [`build`](Self::build).
+    pub fn build_with<const D: usize, S: Tiles>(&self) -> Result<SpecNoise<D, S>, Error> {
         if !self.base.has_dimension(D) {
             return Err(Error::Dimension {
                 noise: self.base.name(),
@@ -295,9 +392,17 @@ impl Spec {
             Base::MNoise => Any::M61(MNoise::new(s)),
             Base::MNoise4093 => Any::M4093(MNoise::seeded(s)),
             Base::Wavelet if D == 2 => {
-                Any::Wavelet2(Wavelet::new(s, &TILE2).with_tiling(self.tiling))
+                Any::Wavelet2(Wavelet::new(s, S::two()).with_tiling(self.tiling))
             }
-            Base::Wavelet => Any::Wavelet3(Wavelet::new(s, &TILE3).with_tiling(self.tiling)),
+            Base::Wavelet => Any::Wavelet3(Wavelet::new(s, S::three()).with_tiling(self.tiling)),
+            Base::Multiband if D == 2 => Any::Multiband2(
+                Multiband::new(s, S::two(), self.bands(), self.distribution)
+                    .with_tiling(self.tiling),
+            ),
+            Base::Multiband => Any::Multiband3(
+                Multiband::new(s, S::three(), self.bands(), self.distribution)
+                    .with_tiling(self.tiling),
+            ),
         };
         Ok(SpecNoise {
             spec: *self,
@@ -327,7 +432,21 @@ impl fmt::Display for Spec {
                 write!(f, "{p}")?;
             }
         }
-        if self.base == Base::Wavelet {
+        if self.base == Base::Multiband {
+            write!(f, " first={} bands=", self.first_band)?;
+            let weights = self.weights.get(..usize::from(self.band_count));
+            for (i, w) in weights.unwrap_or(&[]).iter().enumerate() {
+                if i > 0 {
+                    f.write_str(",")?;
+                }
+                write!(f, "{w}")?;
+            }
+            f.write_str(match self.distribution {
+                Distribution::Gaussian => " distribution=gaussian",
+                Distribution::Uniform => " distribution=uniform",
+            })?;
+        }
+        if self.base.is_wavelet() {
             f.write_str(match self.tiling {
                 Tiling::Varied => " tiling=varied",
                 Tiling::Periodic => " tiling=periodic",
@@ -352,6 +471,34 @@ fn kind_name(kind: Kind) -> &'static str {
         Kind::Fbm => "fbm",
         Kind::Turbulence => "turbulence",
         Kind::Ridged => "ridged",
+    }
+}
+
+/// With the `serde` feature, a spec is its text form in any serde format: a string such as
+/// `"perlin seed=7 fbm octaves=4 lacunarity=2 gain=0.5"`, which a configuration file or a
+/// JSON message can hold and a person can read; a bad string is the parser's error, position
+/// and all. No allocation either way.
+#[cfg(feature = "serde")]
+impl serde::Serialize for Spec {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        serializer.collect_str(self)
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<'de> serde::Deserialize<'de> for Spec {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct Text;
+        impl serde::de::Visitor<'_> for Text {
+            type Value = Spec;
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a noise description such as \"perlin seed=7 fbm octaves=4\"")
+            }
+            fn visit_str<E: serde::de::Error>(self, text: &str) -> Result<Spec, E> {
+                text.parse().map_err(E::custom)
+            }
+        }
+        deserializer.deserialize_str(Text)
     }
 }
 
@@ -398,9 +545,9 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str =
-    "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, wavelet)";
-const EXPECTED_SETTING: &str =
-    "a setting (seed=, period=, tiling=, fbm, turbulence, ridged, octaves=, lacunarity=, gain=)";
+    "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, wavelet, multiband)";
+const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
+     distribution=, fbm, turbulence, ridged, octaves=, lacunarity=, gain=)";
 
 impl FromStr for Spec {
     type Err = ParseError;
@@ -421,6 +568,7 @@ impl FromStr for Spec {
         let mut seen = Seen::default();
         let mut kind = None;
         let (mut count, mut lacunarity, mut gain) = (None, None, None);
+        let (mut first, mut weights) = (None, None);
         let defaults = Octaves::default();
         for (at, word) in words {
             let (key, value, value_at) = match word.split_once('=') {
@@ -431,6 +579,9 @@ impl FromStr for Spec {
                 "seed" => &mut seen.seed,
                 "period" => &mut seen.period,
                 "tiling" => &mut seen.tiling,
+                "first" => &mut seen.first,
+                "bands" => &mut seen.bands,
+                "distribution" => &mut seen.distribution,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -441,6 +592,13 @@ impl FromStr for Spec {
                 return Err(err(at, "each setting at most once"));
             }
             let needs_value = |expected| value.ok_or(err(value_at, expected));
+            if matches!(key, "first" | "bands") && base != Base::Multiband {
+                return Err(ParseError {
+                    position: at,
+                    expected: "bands only for multiband noise",
+                    refused: Some(Error::NotMultiband(base.name())),
+                });
+            }
             match key {
                 "seed" => {
                     const E: &str = "a seed in 0..=4294967295";
@@ -480,6 +638,41 @@ impl FromStr for Spec {
                         refused: Some(e),
                     })?;
                 }
+                "first" => {
+                    const E: &str = "a first band in -24..=8";
+                    let v = needs_value(E)?;
+                    first = Some((value_at, v.parse().map_err(|_| err(value_at, E))?));
+                }
+                "bands" => {
+                    const E: &str = "up to 16 band weights, separated by commas";
+                    let v = needs_value(E)?;
+                    let mut w = [0.0f32; MAX_BANDS];
+                    let mut n = 0;
+                    let mut part_at = value_at;
+                    // An empty list is no bands (the noise is 0).
+                    for part in v.split(',').filter(|_| !v.is_empty()) {
+                        let slot = w.get_mut(n).ok_or(err(part_at, E))?;
+                        *slot = parse_f32(part).ok_or(err(part_at, E))?;
+                        n += 1;
+                        part_at += part.len() + 1;
+                    }
+                    weights = Some((value_at, w, n));
+                }
+                "distribution" => {
+                    const E: &str = "a distribution (gaussian, uniform)";
+                    let distribution = match needs_value(E)? {
+                        "gaussian" => Distribution::Gaussian,
+                        "uniform" => Distribution::Uniform,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec
+                        .with_distribution(distribution)
+                        .map_err(|e| ParseError {
+                            position: at,
+                            expected: "distribution only for multiband noise",
+                            refused: Some(e),
+                        })?;
+                }
                 "fbm" | "turbulence" | "ridged" => {
                     if value.is_some() {
                         return Err(err(at + key.len(), "a space after the fractal kind"));
@@ -509,6 +702,26 @@ impl FromStr for Spec {
                     gain = Some((value_at, parse_f32(v).ok_or(err(value_at, E))?));
                 }
             }
+        }
+        if first.is_some() || weights.is_some() {
+            let at = [first.map(|f| f.0), weights.map(|w| w.0)]
+                .into_iter()
+                .flatten()
+                .min()
+                .unwrap_or(0);
+            let bands = Bands::new(
+                first.map_or(0, |f| f.1),
+                match &weights {
+                    Some((_, w, n)) => w.get(..*n).unwrap_or(&[]),
+                    None => DEFAULT_WEIGHTS.get(..DEFAULT_BAND_COUNT).unwrap_or(&[]),
+                },
+            );
+            let refused = |e| ParseError {
+                position: at,
+                expected: "bands in range",
+                refused: Some(e),
+            };
+            spec = spec.with_bands(&bands.map_err(refused)?).map_err(refused)?;
         }
         let first_octave_setting = [
             count.map(|c| c.0),
@@ -568,6 +781,9 @@ struct Seen {
     seed: bool,
     period: bool,
     tiling: bool,
+    first: bool,
+    bands: bool,
+    distribution: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -595,35 +811,107 @@ impl<'a> Iterator for Words<'a> {
     }
 }
 
+/// The wavelet tiles a [`SpecNoise`] reads: [`F32Tiles`] (the default), [`I16Tiles`], or a
+/// user's own (a smaller tile for a web page, say).
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::spec::{Spec, Tiles};
+/// use bandnoise::wavelet::{DEFAULT_TILE_SEED, QuantizedTile2, QuantizedTile3, Tile2, Tile3};
+/// use bandnoise::Noise;
+///
+/// /// 16² and 16³ tiles of `i16`: 8.5 KiB in all.
+/// #[derive(Clone, Debug, PartialEq)]
+/// struct Small;
+/// static TWO: QuantizedTile2<16> = QuantizedTile2::quantize(&Tile2::generate(DEFAULT_TILE_SEED));
+/// static THREE: QuantizedTile3<16> = QuantizedTile3::quantize(&Tile3::generate(DEFAULT_TILE_SEED));
+/// impl Tiles for Small {
+///     type Two = QuantizedTile2<16>;
+///     type Three = QuantizedTile3<16>;
+///     fn two() -> &'static Self::Two { &TWO }
+///     fn three() -> &'static Self::Three { &THREE }
+/// }
+///
+/// let spec: Spec = "multiband seed=2 bands=1,0.5".parse()?;
+/// let noise = spec.build_with::<3, Small>()?;
+/// let v: f32 = noise.sample([0.5, 1.5, 2.5]);
+/// assert!(v.is_finite());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub trait Tiles: Clone + fmt::Debug + PartialEq + 'static {
+    /// The 2D tile.
+    type Two: TileData<2> + TileVariance + Clone + fmt::Debug + PartialEq + 'static;
+    /// The 3D tile.
+    type Three: TileData<3> + TileVariance + Clone + fmt::Debug + PartialEq + 'static;
+    /// The 2D tile.
+    fn two() -> &'static Self::Two;
+    /// The 3D tile.
+    fn three() -> &'static Self::Three;
+}
+
+/// The default tiles, [`TILE2`] and [`TILE3`] (`f32`, 16 KiB and 128 KiB).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct F32Tiles;
+
+impl Tiles for F32Tiles {
+    type Two = Tile2<64>;
+    type Three = Tile3<32>;
+    fn two() -> &'static Tile2<64> {
+        &TILE2
+    }
+    fn three() -> &'static Tile3<32> {
+        &TILE3
+    }
+}
+
+/// The quantized default tiles, [`TILE2_I16`] and [`TILE3_I16`] (8 KiB and 64 KiB).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct I16Tiles;
+
+impl Tiles for I16Tiles {
+    type Two = QuantizedTile2<64>;
+    type Three = QuantizedTile3<32>;
+    fn two() -> &'static QuantizedTile2<64> {
+        &TILE2_I16
+    }
+    fn three() -> &'static QuantizedTile3<32> {
+        &TILE3_I16
+    }
+}
+
 /// The typed noises a [`SpecNoise`] may hold.
 #[derive(Clone, Debug)]
 #[allow(
     clippy::large_enum_variant,
     reason = "no allocation: a built spec holds its noise inline, 512 bytes at most"
 )]
-enum Any {
+enum Any<S: Tiles> {
     Perlin(Perlin),
     Original(OriginalPerlin),
     Value(ValueNoise),
     C(CNoise),
     M61(MNoise<61>),
     M4093(MNoise<4093>),
-    Wavelet2(Wavelet<'static, Tile2<64>>),
-    Wavelet3(Wavelet<'static, Tile3<32>>),
+    Wavelet2(Wavelet<'static, S::Two>),
+    Wavelet3(Wavelet<'static, S::Three>),
+    Multiband2(Multiband<'static, S::Two>),
+    Multiband3(Multiband<'static, S::Three>),
 }
 
-/// A [`Spec`] built for `D` dimensions ([`Spec::build`]): the typed noises it names, sampled
-/// through the crate's own types, so every value is theirs bit for bit.
+/// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
+/// typed noises it names, sampled through the crate's own types, so every value is theirs bit
+/// for bit.
 #[derive(Clone, Debug)]
-pub struct SpecNoise<const D: usize> {
+pub struct SpecNoise<const D: usize, S: Tiles = F32Tiles> {
     spec: Spec,
-    base: Any,
+    base: Any<S>,
     /// The layers, built and validated once, wrapped around the base at each call.
     period: Option<Periodic<(), D>>,
     fractal: Option<Fractal<()>>,
 }
 
-impl<const D: usize> SpecNoise<D> {
+impl<const D: usize, S: Tiles> SpecNoise<D, S> {
     /// The description this noise was built from.
     #[must_use]
     pub const fn spec(&self) -> &Spec {
@@ -686,8 +974,8 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for Zero {
 /// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` names the variant sampled in this
 /// dimension, if any.
 macro_rules! spec_noise {
-    ($d:literal $(, $wavelet:ident)?) => {
-        impl SpecNoise<$d> {
+    ($d:literal $(, $wavelet:ident, $multiband:ident)?) => {
+        impl<S: Tiles> SpecNoise<$d, S> {
             /// Calls `f` with the typed noise this spec describes.
             fn visit<R: Real, T>(&self, f: impl FnOnce(&dyn NoiseGradient<R, $d>) -> T) -> T {
                 let (period, fractal) = (self.period.as_ref(), self.fractal.as_ref());
@@ -698,14 +986,17 @@ macro_rules! spec_noise {
                     Any::C(n) => with_layers(n, period, fractal, f),
                     Any::M61(n) => with_layers(n, period, fractal, f),
                     Any::M4093(n) => with_layers(n, period, fractal, f),
-                    $(Any::$wavelet(n) => with_fractal(n, fractal, f),)?
+                    $(Any::$wavelet(n) => with_fractal(n, fractal, f),
+                    Any::$multiband(n) => with_fractal(n, fractal, f),)?
                     #[allow(unreachable_patterns, reason = "the other wavelet dimension")]
-                    Any::Wavelet2(_) | Any::Wavelet3(_) => f(&Zero),
+                    Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_) => {
+                        f(&Zero)
+                    }
                 }
             }
         }
 
-        impl<R: Real> Noise<R, $d> for SpecNoise<$d> {
+        impl<R: Real, S: Tiles> Noise<R, $d> for SpecNoise<$d, S> {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
                 self.visit(|n| n.sample(p))
@@ -724,7 +1015,7 @@ macro_rules! spec_noise {
             }
         }
 
-        impl<R: Real> NoiseGradient<R, $d> for SpecNoise<$d> {
+        impl<R: Real, S: Tiles> NoiseGradient<R, $d> for SpecNoise<$d, S> {
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
                 self.visit(|n| n.sample_with_gradient(p))
             }
@@ -733,6 +1024,6 @@ macro_rules! spec_noise {
 }
 
 spec_noise!(1);
-spec_noise!(2, Wavelet2);
-spec_noise!(3, Wavelet3);
+spec_noise!(2, Wavelet2, Multiband2);
+spec_noise!(3, Wavelet3, Multiband3);
 spec_noise!(4);

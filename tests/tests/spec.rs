@@ -4,7 +4,8 @@
 
 use bandnoise::prelude::*;
 use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
-use bandnoise::wavelet::Tiling;
+use bandnoise::spec::{I16Tiles, Tiles};
+use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling};
 use bandnoise::{Error, batch::Grid};
 use bandnoise_tests::{AllTypes, Rng};
 
@@ -190,6 +191,59 @@ fn wavelet_specs_sample_their_typed_noise_bit_for_bit() {
     }
 }
 
+/// Multiband noise over both tile sets, every distribution and tiling, plain and summed.
+#[test]
+fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(184);
+    let octaves = Octaves::new(3, 2.0, 0.5).expect("valid");
+    let bands = Bands::new(-2, &[0.5, 1.0, 0.25, -0.125]).expect("valid");
+    for distribution in [Distribution::Gaussian, Distribution::Uniform] {
+        for tiling in [Tiling::Varied, Tiling::Periodic] {
+            let spec = Spec::new(Base::Multiband, 6)
+                .with_bands(&bands)
+                .and_then(|s| s.with_distribution(distribution))
+                .and_then(|s| s.with_tiling(tiling))
+                .expect("multiband");
+            let text = spec.to_string();
+            assert_eq!(text.parse::<Spec>(), Ok(spec));
+            let m2 = Multiband::new(6, &TILE2, bands.clone(), distribution).with_tiling(tiling);
+            let m3 = Multiband::new(6, &TILE3, bands.clone(), distribution).with_tiling(tiling);
+            same(&text, &spec.build::<2>().expect("2D"), &m2, &mut rng);
+            same(&text, &spec.build::<3>().expect("3D"), &m3, &mut rng);
+            let q2 = Multiband::new(6, &TILE2_I16, bands.clone(), distribution).with_tiling(tiling);
+            let q3 = Multiband::new(6, &TILE3_I16, bands.clone(), distribution).with_tiling(tiling);
+            let built2 = spec.build_with::<2, I16Tiles>().expect("2D");
+            let built3 = spec.build_with::<3, I16Tiles>().expect("3D");
+            same(&text, &built2, &q2, &mut rng);
+            same(&text, &built3, &q3, &mut rng);
+            let summed = spec.with_fractal(Kind::Ridged, octaves);
+            same(
+                &summed.to_string(),
+                &summed.build::<3>().expect("3D"),
+                &Fractal::new(m3, octaves, Kind::Ridged),
+                &mut rng,
+            );
+        }
+    }
+    // The defaults are Multiband's own, and the I16 set holds the quantized default tiles.
+    let default = Spec::new(Base::Multiband, 1);
+    assert_eq!(default.bands(), Bands::default());
+    assert_eq!(default.distribution(), Distribution::default());
+    assert!(core::ptr::eq(I16Tiles::three(), &TILE3_I16));
+    assert_eq!(
+        default.to_string(),
+        "multiband seed=1 first=0 bands=1,0.5,0.25,0.125,0.0625 distribution=gaussian \
+         tiling=varied"
+    );
+    // No bands is the zero noise, and round-trips.
+    let none = default
+        .with_bands(&Bands::new(3, &[]).expect("valid"))
+        .expect("multiband");
+    assert_eq!(none.to_string().parse::<Spec>(), Ok(none));
+    let zero: f32 = none.build::<2>().expect("2D").sample([0.3, 0.4]);
+    assert_eq!(zero, 0.0);
+}
+
 /// Random specs of every shape.
 fn random_spec(rng: &mut Rng) -> Spec {
     let base = Base::ALL[rng.next_u64() as usize % Base::ALL.len()];
@@ -201,8 +255,21 @@ fn random_spec(rng: &mut Rng) -> Spec {
             .collect();
         spec = spec.with_period(&period).expect("valid periods");
     }
-    if base == Base::Wavelet && rng.next_u64().is_multiple_of(2) {
+    if base.is_wavelet() && rng.next_u64().is_multiple_of(2) {
         spec = spec.with_tiling(Tiling::Periodic).expect("wavelet");
+    }
+    if base == Base::Multiband {
+        let weights: Vec<f32> = (0..rng.next_u64() % 17)
+            .map(|_| rng.f64_in(-2.0, 2.0) as f32)
+            .collect();
+        let first = (rng.next_u64() % 33) as i32 - 24;
+        let bands = Bands::new(first, &weights).expect("in range");
+        spec = spec.with_bands(&bands).expect("multiband");
+        if rng.next_u64().is_multiple_of(2) {
+            spec = spec
+                .with_distribution(Distribution::Uniform)
+                .expect("multiband");
+        }
     }
     if rng.next_u64().is_multiple_of(2) {
         let kind = KINDS[rng.next_u64() as usize % 3];
@@ -276,6 +343,25 @@ fn bad_text_names_the_position_and_what_was_expected() {
         ("perlin fbm gain=-1.5", 16, "octave settings in range"),
         ("perlin fbm gain=.", 16, "a gain"),
         ("perlin\tseed=1", 0, "a noise name"),
+        ("perlin bands=1", 7, "bands only for multiband"),
+        ("wavelet first=0", 8, "bands only for multiband"),
+        (
+            "value distribution=uniform",
+            6,
+            "distribution only for multiband",
+        ),
+        ("multiband distribution=normal", 23, "a distribution"),
+        ("multiband first=9", 16, "bands in range"),
+        ("multiband first=x", 16, "a first band"),
+        ("multiband bands=1,,2", 18, "up to 16 band weights"),
+        ("multiband bands=1,nan", 18, "up to 16 band weights"),
+        ("multiband bands=1,2e7", 18, "up to 16 band weights"),
+        ("multiband bands=2000000", 16, "bands in range"),
+        (
+            "multiband bands=1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1,1",
+            48,
+            "up to 16 band weights",
+        ),
     ];
     for &(text, position, expected) in cases {
         let e = text
@@ -374,6 +460,7 @@ fn every_noise_type_in_core_is_described() {
         ("Periodic", "period="),
         ("Fractal", "fbm, turbulence, ridged"),
         ("Wavelet", "wavelet"),
+        ("Multiband", "multiband"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -388,8 +475,6 @@ fn every_noise_type_in_core_is_described() {
         ),
         ("&N", "a reference to a noise"),
     ];
-    // Not yet described (issue 15, point 7 in progress).
-    let pending: &[&str] = &["Multiband"];
     let mut found = std::collections::BTreeSet::new();
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/src");
     let mut dirs = vec![std::path::PathBuf::from(root)];
@@ -433,9 +518,8 @@ fn every_noise_type_in_core_is_described() {
         assert!(found.contains(name), "the scan finds {name}: {found:?}");
     }
     for name in &found {
-        let known = described.iter().any(|(t, _)| t == name)
-            || not_noises.iter().any(|(t, _)| t == name)
-            || pending.contains(&name.as_str());
+        let known =
+            described.iter().any(|(t, _)| t == name) || not_noises.iter().any(|(t, _)| t == name);
         assert!(
             known,
             "{name} implements Noise but is not described by bandnoise::spec"
@@ -450,4 +534,29 @@ fn every_noise_type_in_core_is_described() {
             assert!(name.parse::<Spec>().is_ok(), "{name}");
         }
     }
+}
+
+/// With the `serde` feature a spec is its text form: a JSON string that round-trips, and a bad
+/// string fails with the parser's message.
+#[test]
+fn serde_writes_and_reads_the_text_form() {
+    let mut rng = Rng::from_env(185);
+    for _ in 0..2_000 {
+        let spec = random_spec(&mut rng);
+        let json = serde_json::to_string(&spec).expect("serialises");
+        assert_eq!(json, format!("\"{spec}\""));
+        let back: Spec = serde_json::from_str(&json).expect("deserialises");
+        assert_eq!(back, spec);
+    }
+    let config = r#"{"terrain": "perlin seed=7 fbm octaves=4", "clouds": "multiband seed=2"}"#;
+    let map: std::collections::BTreeMap<String, Spec> =
+        serde_json::from_str(config).expect("valid");
+    assert_eq!(map["clouds"], Spec::new(Base::Multiband, 2));
+    let err = serde_json::from_str::<Spec>("\"perlin seed=x\"").unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("at byte 12: expected a seed in 0..=4294967295"),
+        "{err}"
+    );
+    assert!(serde_json::from_str::<Spec>("7").is_err());
 }
