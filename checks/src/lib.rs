@@ -1,4 +1,6 @@
-//! Checksums of a fixed set of samples of every bandnoise noise, in `I16F16` and `f32`.
+//! Checksums of a fixed set of samples of every bandnoise noise, in `I16F16` and `f32`: every
+//! [`Base`] of the runtime description in each of its dimensions, composed descriptions, and
+//! what a description does not name.
 //!
 //! The same function runs on the host (where build scripts turn it into the expected values),
 //! in firmware under QEMU and in wasm32 in Chromium; equal checksums mean bit-identical results.
@@ -10,19 +12,18 @@
 pub mod count;
 pub mod led;
 
-use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
-use bandnoise::lattice::{
-    CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
-};
-use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet};
+use bandnoise::lattice::TabledPerlin;
+use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
+use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE3_I16};
 use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 
 /// Samples per checksum.
 pub const POINTS: u32 = 64;
 
 /// The number of checksums [`checksums`] produces.
-pub const COUNT: usize = 2 * (6 * 4 + 11);
+pub const COUNT: usize = 2 * (BASE_CHECKS + COMPOSED + OTHER.len());
 
 /// Raw bits of a sample, the same for every number type's meaning of "bit-identical".
 pub trait Bits: Real {
@@ -77,54 +78,128 @@ fn checksum<R: Bits, const D: usize>(noise: &impl Noise<R, D>, range: i32) -> u3
     f.0
 }
 
-/// Checksums for every noise in one number type, in a fixed order (see [`NAMES`]).
+/// The checksum of `spec` in `dims` dimensions over `(-range, range)^D`, with the quantized
+/// wavelet tiles (the `f32` ones would not fit a microcontroller's flash); `u32::MAX` if the
+/// spec does not build in `dims` dimensions (never for the lists below).
+fn spec_checksum<R: Bits>(spec: &Spec, dims: usize, range: i32) -> u32 {
+    fn one<R: Bits, const D: usize>(spec: &Spec, range: i32) -> u32
+    where
+        SpecNoise<D, I16Tiles>: Noise<R, D>,
+    {
+        spec.build_with::<D, I16Tiles>()
+            .map_or(u32::MAX, |n| checksum::<R, D>(&n, range))
+    }
+    match dims {
+        1 => one::<R, 1>(spec, range),
+        2 => one::<R, 2>(spec, range),
+        3 => one::<R, 3>(spec, range),
+        _ => one::<R, 4>(spec, range),
+    }
+}
+
+/// The seed of each base's checksums: 1 for the lattice noises, 3 for the wavelet noises.
+const fn seed(base: Base) -> u32 {
+    if base.is_wavelet() { 3 } else { 1 }
+}
+
+/// How many checksums [`Base::ALL`] gives: one per base and dimension it has.
+const BASE_CHECKS: usize = {
+    let mut n = 0;
+    let mut i = 0;
+    while i < Base::ALL.len() {
+        let mut d = 1;
+        while d <= 4 {
+            if Base::ALL[i].has_dimension(d) {
+                n += 1;
+            }
+            d += 1;
+        }
+        i += 1;
+    }
+    n
+};
+
+/// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
+/// spec, its dimensions and the range of the points.
+const COMPOSED: usize = 5;
+
+fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
+    let octaves = Octaves::default();
+    let periodic = |base, seed, period: &[u32]| {
+        // In range: refused only for a wavelet base or periods outside 1..=65536.
+        Spec::new(base, seed)
+            .with_period(period)
+            .unwrap_or(Spec::new(base, seed))
+    };
+    let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
+    let multiband = Spec::new(Base::Multiband, 3)
+        .with_bands(&bands)
+        .and_then(|s| s.with_distribution(Distribution::Uniform))
+        .unwrap_or(Spec::new(Base::Multiband, 3));
+    [
+        (
+            "fbm perlin 3D",
+            Spec::new(Base::Perlin, 2).with_fractal(Kind::Fbm, octaves),
+            3,
+            100,
+        ),
+        (
+            "turbulence mnoise 3D",
+            Spec::new(Base::MNoise, 2).with_fractal(Kind::Turbulence, octaves),
+            3,
+            100,
+        ),
+        ("multiband uniform 3D", multiband, 3, 100),
+        (
+            "periodic perlin 3D",
+            periodic(Base::Perlin, 4, &[5, 256, 1000]),
+            3,
+            2000,
+        ),
+        (
+            "periodic value 2D",
+            periodic(Base::Value, 4, &[3, 300]),
+            2,
+            2000,
+        ),
+    ]
+}
+
+/// Checksums of what is not a noise description: projected sampling, the cell hash and
+/// generator, and [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 4] = [
+    "multiband projected",
+    "cell hash and generator",
+    "tabled perlin 2D",
+    "tabled perlin 3D",
+];
+
+/// Checksums for every noise in one number type, in a fixed order (see [`names`]).
 fn all<R: Bits>(out: &mut [u32]) {
     let mut k = 0;
     let mut push = |v: u32| {
-        out[k] = v;
+        if let Some(slot) = out.get_mut(k) {
+            *slot = v;
+        }
         k += 1;
     };
-    macro_rules! dims {
-        ($n:expr) => {{
-            let n = $n;
-            push(checksum::<R, 1>(&n, 200));
-            push(checksum::<R, 2>(&n, 200));
-            push(checksum::<R, 3>(&n, 200));
-            push(checksum::<R, 4>(&n, 200));
-        }};
+    // Every base in each of its dimensions: a noise added to `Base` is checked here unasked.
+    for base in Base::ALL {
+        for dims in (1..=4).filter(|&d| base.has_dimension(d)) {
+            push(spec_checksum::<R>(&Spec::new(base, seed(base)), dims, 200));
+        }
     }
-    dims!(Perlin::new(1));
-    dims!(OriginalPerlin::new(1));
-    dims!(ValueNoise::new(1));
-    dims!(CNoise::new(1));
-    dims!(MNoise::<61>::seeded(1));
-    dims!(MNoise::<4093>::seeded(1));
-    let octaves = Octaves::default();
-    push(checksum::<R, 3>(
-        &Fractal::fbm(Perlin::new(2), octaves),
-        100,
-    ));
-    push(checksum::<R, 3>(
-        &Fractal::turbulence(MNoise::<61>::seeded(2), octaves),
-        100,
-    ));
-    push(checksum::<R, 2>(&Wavelet::new(3, &TILE2_I16), 200));
-    push(checksum::<R, 3>(&Wavelet::new(3, &TILE3_I16), 200));
+    for (_, spec, dims, range) in composed() {
+        push(spec_checksum::<R>(&spec, dims, range));
+    }
     let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
     let multi = Multiband::new(3, &TILE3_I16, bands, Distribution::Uniform);
-    push(checksum::<R, 3>(&multi, 100));
     let mut f = Fnv::new();
     for i in 0..POINTS / 4 {
         let n = point::<R, 3>(i + 1000, 1);
         f.add(multi.sample_projected(point::<R, 3>(i, 100), n).bits());
     }
     push(f.0);
-    if let Ok(p) = Periodic::new(Perlin::new(4), [5, 256, 1000]) {
-        push(checksum::<R, 3>(&p, 2000));
-    }
-    if let Ok(p) = Periodic::new(ValueNoise::new(4), [3, 300]) {
-        push(checksum::<R, 2>(&p, 2000));
-    }
     // The cell hash and the cell generator: a hash, two uniforms and a Poisson count per cell.
     let mut f = Fnv::new();
     let hash = CellHash::new(5);
@@ -145,54 +220,50 @@ fn all<R: Bits>(out: &mut [u32]) {
     push(checksum::<R, 3>(&tabled, 200));
 }
 
-/// The name of each checksum, in order.
-pub const NAMES: [&str; COUNT] = {
-    const ONE: [&str; COUNT / 2] = [
-        "perlin 1D",
-        "perlin 2D",
-        "perlin 3D",
-        "perlin 4D",
-        "original 1D",
-        "original 2D",
-        "original 3D",
-        "original 4D",
-        "value 1D",
-        "value 2D",
-        "value 3D",
-        "value 4D",
-        "cnoise 1D",
-        "cnoise 2D",
-        "cnoise 3D",
-        "cnoise 4D",
-        "mnoise61 1D",
-        "mnoise61 2D",
-        "mnoise61 3D",
-        "mnoise61 4D",
-        "mnoise4093 1D",
-        "mnoise4093 2D",
-        "mnoise4093 3D",
-        "mnoise4093 4D",
-        "fbm perlin 3D",
-        "turbulence mnoise 3D",
-        "wavelet 2D",
-        "wavelet 3D",
-        "multiband uniform 3D",
-        "multiband projected",
-        "periodic perlin 3D",
-        "periodic value 2D",
-        "cell hash and generator",
-        "tabled perlin 2D",
-        "tabled perlin 3D",
-    ];
-    let mut names = [""; COUNT];
-    let mut i = 0;
-    while i < COUNT / 2 {
-        names[i] = ONE[i]; // I16F16
-        names[i + COUNT / 2] = ONE[i]; // f32
-        i += 1;
+/// What a checksum samples: a base noise in some dimensions, or a named check. (Not the
+/// spec's text, whose floats would bring float formatting into the firmware.)
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Name {
+    /// [`Spec::new`] of the base with its seed, sampled in this many dimensions.
+    Base(Base, usize),
+    /// A composed description, projected sampling, the cell hash, or the tabled Perlin noise.
+    Other(&'static str),
+}
+
+impl core::fmt::Display for Name {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Name::Base(base, dims) => write!(f, "{base} {dims}D"),
+            Name::Other(name) => f.write_str(name),
+        }
     }
+}
+
+/// The name of each checksum, in order (the same for both number types).
+pub fn names() -> [Name; COUNT] {
+    let mut names = [Name::Other(""); COUNT];
+    let mut one = names.iter_mut().take(COUNT / 2);
+    for base in Base::ALL {
+        for dims in (1..=4).filter(|&d| base.has_dimension(d)) {
+            if let Some(n) = one.next() {
+                *n = Name::Base(base, dims);
+            }
+        }
+    }
+    for (name, ..) in composed() {
+        if let Some(n) = one.next() {
+            *n = Name::Other(name);
+        }
+    }
+    for other in OTHER {
+        if let Some(n) = one.next() {
+            *n = Name::Other(other);
+        }
+    }
+    let (fixed, float) = names.split_at_mut(COUNT / 2);
+    float.copy_from_slice(fixed);
     names
-};
+}
 
 /// Whether checksum `i` is of I16F16 (the first half) or f32 (the second half).
 pub const fn is_fixed(i: usize) -> bool {
@@ -201,12 +272,13 @@ pub const fn is_fixed(i: usize) -> bool {
 
 /// Compares [`checksums`] with `expected` (the host's), calling `report(number type, name,
 /// got, expected)` for each difference; returns how many differ.
-pub fn compare(expected: &[u32; COUNT], mut report: impl FnMut(&str, &str, u32, u32)) -> usize {
+pub fn compare(expected: &[u32; COUNT], mut report: impl FnMut(&str, Name, u32, u32)) -> usize {
     let mut differ = 0;
-    for (i, (g, e)) in checksums().iter().zip(expected).enumerate() {
+    let names = names();
+    for (i, ((g, e), name)) in checksums().iter().zip(expected).zip(names).enumerate() {
         if g != e {
             differ += 1;
-            report(if is_fixed(i) { "I16F16" } else { "f32" }, NAMES[i], *g, *e);
+            report(if is_fixed(i) { "I16F16" } else { "f32" }, name, *g, *e);
         }
     }
     differ

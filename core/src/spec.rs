@@ -5,7 +5,7 @@
 //! A [`Spec`] is plain data (`Copy`, no allocation, no tables). [`Spec::build`] checks it against
 //! a dimension and builds the typed noises it names into a [`SpecNoise`], which samples with
 //! exactly the bits of the typed noise it describes (every entry point of
-//! [`NoiseGradient`], batches included), through one dynamic call per sample or batch.
+//! [`NoiseGradient`], batches included), through one `match` per sample or batch.
 //!
 //! The layers nest in the only order the crate's types allow: a base noise, wrapped by
 //! [`Periodic`] (lattice noises only), summed by [`Fractal`]. Any other shape cannot be written.
@@ -406,8 +406,7 @@ impl Spec {
         };
         Ok(SpecNoise {
             spec: *self,
-            base,
-            period,
+            layers: Layers { base, period },
             fractal,
         })
     }
@@ -905,10 +904,18 @@ enum Any<S: Tiles> {
 #[derive(Clone, Debug)]
 pub struct SpecNoise<const D: usize, S: Tiles = F32Tiles> {
     spec: Spec,
-    base: Any<S>,
-    /// The layers, built and validated once, wrapped around the base at each call.
-    period: Option<Periodic<(), D>>,
+    layers: Layers<D, S>,
+    /// The sum, built and validated once, wrapped around the layers at each call.
     fractal: Option<Fractal<()>>,
+}
+
+/// The base noise and its periodic wrap: what a spec's fractal sum adds octaves of. The sum
+/// is compiled once per dimension and number type over this dispatch (a `match` per octave),
+/// not once per base noise, which keeps a program that builds specs at run time small.
+#[derive(Clone, Debug)]
+struct Layers<const D: usize, S: Tiles> {
+    base: Any<S>,
+    period: Option<Periodic<(), D>>,
 }
 
 impl<const D: usize, S: Tiles> SpecNoise<D, S> {
@@ -919,36 +926,27 @@ impl<const D: usize, S: Tiles> SpecNoise<D, S> {
     }
 }
 
-/// The fractal layer of a spec around `n`.
-fn with_fractal<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
-    n: &N,
-    fractal: Option<&Fractal<()>>,
-    f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
-) -> T
-where
-    for<'a> Fractal<&'a N>: NoiseGradient<R, D>,
-{
-    match fractal {
-        None => f(n),
-        Some(sum) => f(&sum.with_noise(n)),
-    }
+/// One operation on the typed noise a [`SpecNoise`] describes. Generic over the noise rather
+/// than a `dyn` call, so a program compiles, for each noise a spec can name, only the
+/// operations it uses: firmware that only samples links no batch or gradient code (a `dyn`
+/// vtable would link every method of every noise).
+trait Op<R: Real, const D: usize> {
+    type Out;
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> Self::Out;
 }
 
-/// The periodic and fractal layers of a spec around the lattice noise `n`.
-fn with_layers<R: Real, const D: usize, N: NoiseGradient<R, D>, T>(
+/// The periodic layer of a spec around the lattice noise `n`.
+fn with_period<R: Real, const D: usize, N: NoiseGradient<R, D>, O: Op<R, D>>(
     n: &N,
     period: Option<&Periodic<(), D>>,
-    fractal: Option<&Fractal<()>>,
-    f: impl FnOnce(&dyn NoiseGradient<R, D>) -> T,
-) -> T
+    op: O,
+) -> O::Out
 where
-    for<'a> Fractal<&'a N>: NoiseGradient<R, D>,
     for<'a> Periodic<&'a N, D>: NoiseGradient<R, D>,
-    for<'a, 'b> Fractal<&'b Periodic<&'a N, D>>: NoiseGradient<R, D>,
 {
     match period {
-        Some(wrap) => with_fractal(&wrap.with_noise(n), fractal, f),
-        None => with_fractal(n, fractal, f),
+        Some(wrap) => op.run(&wrap.with_noise(n)),
+        None => op.run(n),
     }
 }
 
@@ -971,53 +969,117 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for Zero {
     }
 }
 
-/// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` names the variant sampled in this
-/// dimension, if any.
+/// The operations: each entry point of [`NoiseGradient`].
+struct Sample<R, const D: usize>([R; D]);
+struct Bound;
+struct Lanes<'a, R, const D: usize>(&'a [[R; LANES]; D], &'a mut [R; LANES]);
+struct FillGrid<'a, R, const D: usize>(&'a Grid<R, D>, &'a mut [R]);
+struct FillPoints<'a, R, const D: usize>([&'a [R]; D], &'a mut [R]);
+struct Gradient<R, const D: usize>([R; D]);
+
+impl<R: Real, const D: usize> Op<R, D> for Sample<R, D> {
+    type Out = R;
+    #[inline]
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> R {
+        n.sample(self.0)
+    }
+}
+impl<R: Real, const D: usize> Op<R, D> for Bound {
+    type Out = f32;
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> f32 {
+        n.amplitude_bound()
+    }
+}
+impl<R: Real, const D: usize> Op<R, D> for Lanes<'_, R, D> {
+    type Out = ();
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) {
+        n.sample_lanes(self.0, self.1)
+    }
+}
+impl<R: Real, const D: usize> Op<R, D> for FillGrid<'_, R, D> {
+    type Out = Result<(), Error>;
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> Result<(), Error> {
+        n.fill_grid(self.0, self.1)
+    }
+}
+impl<R: Real, const D: usize> Op<R, D> for FillPoints<'_, R, D> {
+    type Out = Result<(), Error>;
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> Result<(), Error> {
+        n.fill_points(self.0, self.1)
+    }
+}
+impl<R: Real, const D: usize> Op<R, D> for Gradient<R, D> {
+    type Out = (R, [R; D]);
+    fn run<N: NoiseGradient<R, D>>(self, n: &N) -> (R, [R; D]) {
+        n.sample_with_gradient(self.0)
+    }
+}
+
+/// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` and `$multiband` name the
+/// variants sampled in this dimension, if any.
 macro_rules! spec_noise {
     ($d:literal $(, $wavelet:ident, $multiband:ident)?) => {
-        impl<S: Tiles> SpecNoise<$d, S> {
-            /// Calls `f` with the typed noise this spec describes.
-            fn visit<R: Real, T>(&self, f: impl FnOnce(&dyn NoiseGradient<R, $d>) -> T) -> T {
-                let (period, fractal) = (self.period.as_ref(), self.fractal.as_ref());
+        impl<S: Tiles> Layers<$d, S> {
+            /// Runs `op` on the (possibly periodic) base noise.
+            fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
+                let period = self.period.as_ref();
                 match &self.base {
-                    Any::Perlin(n) => with_layers(n, period, fractal, f),
-                    Any::Original(n) => with_layers(n, period, fractal, f),
-                    Any::Value(n) => with_layers(n, period, fractal, f),
-                    Any::C(n) => with_layers(n, period, fractal, f),
-                    Any::M61(n) => with_layers(n, period, fractal, f),
-                    Any::M4093(n) => with_layers(n, period, fractal, f),
-                    $(Any::$wavelet(n) => with_fractal(n, fractal, f),
-                    Any::$multiband(n) => with_fractal(n, fractal, f),)?
+                    Any::Perlin(n) => with_period(n, period, op),
+                    Any::Original(n) => with_period(n, period, op),
+                    Any::Value(n) => with_period(n, period, op),
+                    Any::C(n) => with_period(n, period, op),
+                    Any::M61(n) => with_period(n, period, op),
+                    Any::M4093(n) => with_period(n, period, op),
+                    $(Any::$wavelet(n) => op.run(n),
+                    Any::$multiband(n) => op.run(n),)?
                     #[allow(unreachable_patterns, reason = "the other wavelet dimension")]
                     Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_) => {
-                        f(&Zero)
+                        op.run(&Zero)
                     }
                 }
             }
         }
 
-        impl<R: Real, S: Tiles> Noise<R, $d> for SpecNoise<$d, S> {
-            #[inline]
-            fn sample(&self, p: [R; $d]) -> R {
-                self.visit(|n| n.sample(p))
-            }
-            fn amplitude_bound(&self) -> f32 {
-                self.visit::<R, _>(|n| n.amplitude_bound())
-            }
-            fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                self.visit(|n| n.sample_lanes(p, out))
-            }
-            fn fill_grid(&self, grid: &Grid<R, $d>, out: &mut [R]) -> Result<(), Error> {
-                self.visit(|n| n.fill_grid(grid, out))
-            }
-            fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), Error> {
-                self.visit(|n| n.fill_points(points, out))
+        impl<S: Tiles> SpecNoise<$d, S> {
+            /// Runs `op` on the typed noise this spec describes.
+            fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
+                match &self.fractal {
+                    None => self.layers.visit(op),
+                    Some(sum) => op.run(&sum.with_noise(&self.layers)),
+                }
             }
         }
 
-        impl<R: Real, S: Tiles> NoiseGradient<R, $d> for SpecNoise<$d, S> {
+        spec_noise_entry_points!(Layers, $d);
+        spec_noise_entry_points!(SpecNoise, $d);
+    };
+}
+
+/// The entry points of [`NoiseGradient`] for `$ty`, each one call of its `visit`.
+macro_rules! spec_noise_entry_points {
+    ($ty:ident, $d:literal) => {
+        impl<R: Real, S: Tiles> Noise<R, $d> for $ty<$d, S> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                self.visit(Sample(p))
+            }
+            fn amplitude_bound(&self) -> f32 {
+                self.visit::<R, _>(Bound)
+            }
+            fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
+                self.visit(Lanes(p, out))
+            }
+            fn fill_grid(&self, grid: &Grid<R, $d>, out: &mut [R]) -> Result<(), Error> {
+                self.visit(FillGrid(grid, out))
+            }
+            fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), Error> {
+                self.visit(FillPoints(points, out))
+            }
+        }
+
+        impl<R: Real, S: Tiles> NoiseGradient<R, $d> for $ty<$d, S> {
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
-                self.visit(|n| n.sample_with_gradient(p))
+                self.visit(Gradient(p))
             }
         }
     };

@@ -470,6 +470,10 @@ fn every_noise_type_in_core_is_described() {
         ),
         ("SpecNoise", "the description itself"),
         (
+            "Layers",
+            "private: a spec's base and periodic wrap, under its fractal sum",
+        ),
+        (
             "Zero",
             "private: the dispatch's value for dimensions build refuses",
         ),
@@ -495,6 +499,7 @@ fn every_noise_type_in_core_is_described() {
                     line.rsplit(" for ").next().map(str::to_string)
                 } else {
                     line.strip_prefix("lattice_noise_impls!(")
+                        .or_else(|| line.strip_prefix("spec_noise_entry_points!("))
                         .map(str::to_string)
                 };
                 if let Some(ty) = ty {
