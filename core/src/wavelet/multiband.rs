@@ -123,7 +123,12 @@ impl Bands {
 impl Default for Bands {
     /// Five bands from 0 with weights `1, ½, ¼, ⅛, 1/16`.
     fn default() -> Self {
-        Self::fractal(0, 5, 0.5).expect("valid default bands")
+        let mut weights = Vec::new();
+        for w in [1.0, 0.5, 0.25, 0.125, 0.0625] {
+            // Cannot fail: 5 of at most 16 (no `expect`: sampling stays provably panic-free).
+            let _ = weights.push(w);
+        }
+        Self { first: 0, weights }
     }
 }
 
