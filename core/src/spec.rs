@@ -215,6 +215,13 @@ impl Spec {
         }
     }
 
+    /// The same description with another seed.
+    #[must_use]
+    pub const fn with_seed(mut self, seed: u32) -> Self {
+        self.seed = seed;
+        self
+    }
+
     /// The same noise wrapped with `period` (one entry per axis, 1 to 4 of them) by
     /// [`Periodic`].
     ///

@@ -2,10 +2,14 @@
 //!
 //! ```text
 //! cargo run --release -p bandnoise-gallery -- [--size N] [--scale S] [--seed K] [--out DIR]
+//!     [--spec TEXT]
 //! ```
 //!
 //! Each image samples a noise on an `N × N` grid covering `S` lattice cells per side and maps
-//! `[-bound, bound]` (the noise's documented amplitude bound) to black..white.
+//! `[-bound, bound]` (the noise's documented amplitude bound) to black..white. The noises come
+//! from the runtime description (`bandnoise::spec`): every base in 2D, in `f32` (`NAME-2d.png`)
+//! and in fixed point (`NAME-2d-fixed.png`), then fractal sums and periodic tiles written in
+//! its text form. `--spec TEXT` renders one description of your own instead (`spec.png`).
 
 use std::fs::{self, File};
 use std::io::BufWriter;
@@ -13,12 +17,14 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use bandnoise::prelude::*;
+use bandnoise::spec::{Base, Spec, SpecNoise};
 
 struct Options {
     size: u32,
     scale: f32,
     seed: u32,
     out: PathBuf,
+    spec: Option<Spec>,
 }
 
 fn parse_args() -> Result<Options, String> {
@@ -27,6 +33,7 @@ fn parse_args() -> Result<Options, String> {
         scale: 8.0,
         seed: 0,
         out: PathBuf::from("gallery-out"),
+        spec: None,
     };
     let mut args = std::env::args().skip(1);
     while let Some(flag) = args.next() {
@@ -46,9 +53,15 @@ fn parse_args() -> Result<Options, String> {
             }
             "--seed" => o.seed = value()?.parse().map_err(|e| format!("--seed: {e}"))?,
             "--out" => o.out = PathBuf::from(value()?),
+            "--spec" => {
+                let text = value()?;
+                o.spec = Some(text.parse().map_err(|e| format!("--spec {text:?}: {e}"))?);
+            }
             "-h" | "--help" => {
                 return Err(
-                    "usage: bandnoise-gallery [--size N] [--scale S] [--seed K] [--out DIR]".into(),
+                    "usage: bandnoise-gallery [--size N] [--scale S] [--seed K] [--out DIR] \
+                     [--spec TEXT]"
+                        .into(),
                 );
             }
             other => return Err(format!("unknown argument {other}")),
@@ -84,33 +97,38 @@ fn write_png(path: &Path, size: u32, pixels: &[u8]) -> Result<(), String> {
     Ok(())
 }
 
+/// Composed descriptions: fractal sums, and a tile of 4 × 4 cells with its fBm (lacunarity 2
+/// keeps the period: the image repeats), with the gallery's seed.
+const COMPOSED: [(&str, &str); 6] = [
+    ("perlin-fbm-2d", "perlin fbm"),
+    ("perlin-turbulence-2d", "perlin turbulence"),
+    ("perlin-ridged-2d", "perlin ridged"),
+    ("mnoise-fbm-2d", "mnoise fbm"),
+    ("perlin-periodic-2d", "perlin period=4,4"),
+    (
+        "perlin-periodic-fbm-2d",
+        "perlin period=4,4 fbm octaves=6 lacunarity=2 gain=0.5",
+    ),
+];
+
+fn build(spec: &Spec) -> Result<SpecNoise<2>, String> {
+    spec.build::<2>().map_err(|e| format!("{spec}: {e}"))
+}
+
 fn run(o: &Options) -> Result<(), String> {
     fs::create_dir_all(&o.out).map_err(|e| format!("{}: {e}", o.out.display()))?;
-    let s = o.seed;
-    render::<f32, _>(o, "perlin-2d", &Perlin::new(s))?;
-    render::<f32, _>(o, "perlin-original-2d", &OriginalPerlin::new(s))?;
-    render::<f32, _>(o, "value-2d", &ValueNoise::new(s))?;
-    render::<f32, _>(o, "cnoise-2d", &CNoise::new(s))?;
-    render::<f32, _>(o, "mnoise-2d", &MNoise::<61>::new(s))?;
-    render::<I16F16, _>(o, "mnoise-2d-fixed", &MNoise::<61>::new(s))?;
-    render::<I16F16, _>(o, "perlin-2d-fixed", &Perlin::new(s))?;
-    let octaves = Octaves::default();
-    render::<f32, _>(o, "perlin-fbm-2d", &Fractal::fbm(Perlin::new(s), octaves))?;
-    render::<f32, _>(
-        o,
-        "perlin-turbulence-2d",
-        &Fractal::turbulence(Perlin::new(s), octaves),
-    )?;
-    render::<f32, _>(
-        o,
-        "perlin-ridged-2d",
-        &Fractal::ridged(Perlin::new(s), octaves),
-    )?;
-    // A tile of 4 × 4 cells, and its fBm (lacunarity 2 keeps the period): the image repeats.
-    let tile = Periodic::new(Perlin::new(s), [4, 4]).map_err(|e| e.to_string())?;
-    render::<f32, _>(o, "perlin-periodic-2d", &tile)?;
-    let doubling = Octaves::new(6, 2.0, 0.5).map_err(|e| e.to_string())?;
-    render::<f32, _>(o, "perlin-periodic-fbm-2d", &Fractal::fbm(&tile, doubling))?;
+    if let Some(spec) = &o.spec {
+        return render::<f32, _>(o, "spec", &build(spec)?);
+    }
+    for base in Base::ALL.into_iter().filter(|b| b.has_dimension(2)) {
+        let noise = build(&Spec::new(base, o.seed))?;
+        render::<f32, _>(o, &format!("{base}-2d"), &noise)?;
+        render::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise)?;
+    }
+    for (name, text) in COMPOSED {
+        let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+        render::<f32, _>(o, name, &build(&spec.with_seed(o.seed))?)?;
+    }
     Ok(())
 }
 
