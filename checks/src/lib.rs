@@ -292,3 +292,22 @@ pub fn checksums() -> [u32; COUNT] {
     all::<f32>(float);
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_base_is_checked_in_each_of_its_dimensions() {
+        let names = names();
+        for base in Base::ALL {
+            for dims in 1..=4 {
+                let checked = names.contains(&Name::Base(base, dims));
+                assert_eq!(checked, base.has_dimension(dims), "{base} {dims}D");
+            }
+        }
+        let c = checksums();
+        assert_eq!(c.len(), COUNT);
+        assert!(c.iter().all(|&v| v != u32::MAX), "every spec builds");
+    }
+}

@@ -565,3 +565,37 @@ fn serde_writes_and_reads_the_text_form() {
     );
     assert!(serde_json::from_str::<Spec>("7").is_err());
 }
+
+/// The programs that loop over "every noise" take the list from the description
+/// (`Base::ALL`), so a noise added there is checked, proved, fuzzed, tested and rendered
+/// without touching them. A program that goes back to a list of its own fails here.
+#[test]
+fn consumers_take_their_noises_from_the_description() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let consumers = [
+        ("checks/src/lib.rs", "firmware, wasm and host checksums"),
+        (
+            "firmware/cortex-m/src/bin/nopanic_spec.rs",
+            "the no-panic proof",
+        ),
+        ("fuzz/fuzz_targets/lattice.rs", "the lattice fuzz target"),
+        ("fuzz/fuzz_targets/spec.rs", "the description's fuzz target"),
+        ("tests/src/lib.rs", "the test helper Lattice"),
+        ("gallery/src/main.rs", "the gallery"),
+    ];
+    for (path, what) in consumers {
+        let text = std::fs::read_to_string(format!("{root}/{path}")).expect(path);
+        assert!(
+            text.contains("Base::ALL") || text.contains("parse::<Spec>"),
+            "{what} ({path}) does not take its noises from bandnoise::spec"
+        );
+    }
+    // Every base is a lattice noise the helper knows, or a wavelet noise.
+    for base in Base::ALL {
+        if base.is_lattice() {
+            let _ = bandnoise_tests::Lattice::of(base, 0);
+        } else {
+            assert!(base.is_wavelet(), "{base}");
+        }
+    }
+}
