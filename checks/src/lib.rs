@@ -123,6 +123,16 @@ const BASE_CHECKS: usize = {
 /// spec, its dimensions and the range of the points.
 const COMPOSED: usize = 5;
 
+/// Multiband noise with three bands from -1 and uniform values (also sampled projected).
+fn uniform_multiband() -> Spec {
+    let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
+    let spec = Spec::new(Base::Multiband, 3);
+    // Refused only for another base.
+    spec.with_bands(bands)
+        .and_then(|s| s.with_distribution(Distribution::Uniform))
+        .unwrap_or(spec)
+}
+
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
     let periodic = |base, seed, period: &[u32]| {
@@ -131,11 +141,6 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             .with_period(period)
             .unwrap_or(Spec::new(base, seed))
     };
-    let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
-    let multiband = Spec::new(Base::Multiband, 3)
-        .with_bands(&bands)
-        .and_then(|s| s.with_distribution(Distribution::Uniform))
-        .unwrap_or(Spec::new(Base::Multiband, 3));
     [
         (
             "fbm perlin 3D",
@@ -149,7 +154,7 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             3,
             100,
         ),
-        ("multiband uniform 3D", multiband, 3, 100),
+        ("multiband uniform 3D", uniform_multiband(), 3, 100),
         (
             "periodic perlin 3D",
             periodic(Base::Perlin, 4, &[5, 256, 1000]),
@@ -192,8 +197,8 @@ fn all<R: Bits>(out: &mut [u32]) {
     for (_, spec, dims, range) in composed() {
         push(spec_checksum::<R>(&spec, dims, range));
     }
-    let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
-    let multi = Multiband::new(3, &TILE3_I16, bands, Distribution::Uniform);
+    let spec = uniform_multiband();
+    let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution());
     let mut f = Fnv::new();
     for i in 0..POINTS / 4 {
         let n = point::<R, 3>(i + 1000, 1);

@@ -77,8 +77,8 @@ use crate::batch::{Grid, LANES};
 use crate::fractal::{Fractal, Kind, Octaves};
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use crate::wavelet::{
-    Bands, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3, TILE2, TILE2_I16,
-    TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
+    Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
+    TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
 };
 use crate::{Error, Noise, NoiseGradient, Real};
 
@@ -174,28 +174,11 @@ pub struct Spec {
     period: [u32; 4],
     axes: u8,
     tiling: Tiling,
-    /// Multiband noise's bands (validated by [`Bands::new`]): the first band and the first
-    /// `band_count` weights; [`Bands::default`] for every other base.
-    first_band: i32,
-    weights: [f32; MAX_BANDS],
-    band_count: u8,
+    /// Multiband noise's bands and distribution; the defaults for every other base.
+    bands: Bands,
     distribution: Distribution,
     fractal: Option<(Kind, Octaves)>,
 }
-
-/// [`Bands::default`] as a spec stores it (`const`, which [`Bands::default`] is not).
-const DEFAULT_WEIGHTS: [f32; MAX_BANDS] = {
-    let mut w = [0.0; MAX_BANDS];
-    let mut i = 0;
-    let mut a = 1.0;
-    while i < DEFAULT_BAND_COUNT {
-        w[i] = a;
-        a *= 0.5;
-        i += 1;
-    }
-    w
-};
-const DEFAULT_BAND_COUNT: usize = 5;
 
 impl Spec {
     /// `base` with `seed`, no period, the default tiling and no fractal sum.
@@ -207,9 +190,7 @@ impl Spec {
             period: [0; 4],
             axes: 0,
             tiling: Tiling::Varied,
-            first_band: 0,
-            weights: DEFAULT_WEIGHTS,
-            band_count: DEFAULT_BAND_COUNT as u8,
+            bands: DEFAULT_BANDS,
             distribution: Distribution::Gaussian,
             fractal: None,
         }
@@ -270,16 +251,11 @@ impl Spec {
     /// # Errors
     ///
     /// [`Error::NotMultiband`] unless the base is [`Base::Multiband`].
-    pub fn with_bands(mut self, bands: &Bands) -> Result<Self, Error> {
+    pub fn with_bands(mut self, bands: Bands) -> Result<Self, Error> {
         if self.base != Base::Multiband {
             return Err(Error::NotMultiband(self.base.name()));
         }
-        self.first_band = bands.first();
-        self.weights = [0.0; MAX_BANDS];
-        for (w, b) in self.weights.iter_mut().zip(bands.weights()) {
-            *w = *b;
-        }
-        self.band_count = bands.weights().len() as u8;
+        self.bands = bands;
         Ok(self)
     }
 
@@ -332,10 +308,8 @@ impl Spec {
 
     /// Multiband noise's bands ([`Bands::default`] for the other bases).
     #[must_use]
-    pub fn bands(&self) -> Bands {
-        let weights = self.weights.get(..usize::from(self.band_count));
-        // Validated when they were set: never the default for a multiband spec.
-        Bands::new(self.first_band, weights.unwrap_or(&[])).unwrap_or_default()
+    pub const fn bands(&self) -> Bands {
+        self.bands
     }
 
     /// Multiband noise's distribution ([`Distribution::Gaussian`] for the other bases).
@@ -403,11 +377,10 @@ impl Spec {
             }
             Base::Wavelet => Any::Wavelet3(Wavelet::new(s, S::three()).with_tiling(self.tiling)),
             Base::Multiband if D == 2 => Any::Multiband2(
-                Multiband::new(s, S::two(), self.bands(), self.distribution)
-                    .with_tiling(self.tiling),
+                Multiband::new(s, S::two(), self.bands, self.distribution).with_tiling(self.tiling),
             ),
             Base::Multiband => Any::Multiband3(
-                Multiband::new(s, S::three(), self.bands(), self.distribution)
+                Multiband::new(s, S::three(), self.bands, self.distribution)
                     .with_tiling(self.tiling),
             ),
         };
@@ -439,9 +412,8 @@ impl fmt::Display for Spec {
             }
         }
         if self.base == Base::Multiband {
-            write!(f, " first={} bands=", self.first_band)?;
-            let weights = self.weights.get(..usize::from(self.band_count));
-            for (i, w) in weights.unwrap_or(&[]).iter().enumerate() {
+            write!(f, " first={} bands=", self.bands.first())?;
+            for (i, w) in self.bands.weights().iter().enumerate() {
                 if i > 0 {
                     f.write_str(",")?;
                 }
@@ -716,10 +688,10 @@ impl FromStr for Spec {
                 .min()
                 .unwrap_or(0);
             let bands = Bands::new(
-                first.map_or(0, |f| f.1),
+                first.map_or(DEFAULT_BANDS.first(), |f| f.1),
                 match &weights {
                     Some((_, w, n)) => w.get(..*n).unwrap_or(&[]),
-                    None => DEFAULT_WEIGHTS.get(..DEFAULT_BAND_COUNT).unwrap_or(&[]),
+                    None => DEFAULT_BANDS.weights(),
                 },
             );
             let refused = |e| ParseError {
@@ -727,7 +699,7 @@ impl FromStr for Spec {
                 expected: "bands in range",
                 refused: Some(e),
             };
-            spec = spec.with_bands(&bands.map_err(refused)?).map_err(refused)?;
+            spec = spec.with_bands(bands.map_err(refused)?).map_err(refused)?;
         }
         let first_octave_setting = [
             count.map(|c| c.0),

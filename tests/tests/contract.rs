@@ -344,8 +344,8 @@ fn every_noise<R: Special>(rng: &mut Rng) {
     for distribution in [Distribution::Gaussian, Distribution::Uniform] {
         for bands in &band_lists {
             let name = &format!("multiband {distribution:?} from {}", bands.first());
-            let m2 = Multiband::new(8, &TILE2, bands.clone(), distribution);
-            let m3 = Multiband::new(8, &TILE3, bands.clone(), distribution);
+            let m2 = Multiband::new(8, &TILE2, *bands, distribution);
+            let m3 = Multiband::new(8, &TILE3, *bands, distribution);
             sweep_noise::<R, 2, _>(name, &m2, rng);
             sweep_noise::<R, 3, _>(name, &m3, rng);
             sweep_gradient::<R, 2, _>(name, &m2, |p| m2.sample_with_gradient(p), rng);

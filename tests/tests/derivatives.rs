@@ -222,8 +222,8 @@ fn multiband_gradients_match_central_differences() {
     let mut worst = 0.0f64;
     for distribution in [Distribution::Gaussian, Distribution::Uniform] {
         for bands in [Bands::default(), Bands::new(-3, &[1.0, 0.7, 0.3]).unwrap()] {
-            let m2 = Multiband::new(4, &TILE2, bands.clone(), distribution);
-            let m3 = Multiband::new(4, &TILE3, bands.clone(), distribution);
+            let m2 = Multiband::new(4, &TILE2, bands, distribution);
+            let m3 = Multiband::new(4, &TILE3, bands, distribution);
             for _ in 0..3000 {
                 let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0));
                 let (v, g) = m3.sample_with_gradient(p);

@@ -200,18 +200,18 @@ fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
     for distribution in [Distribution::Gaussian, Distribution::Uniform] {
         for tiling in [Tiling::Varied, Tiling::Periodic] {
             let spec = Spec::new(Base::Multiband, 6)
-                .with_bands(&bands)
+                .with_bands(bands)
                 .and_then(|s| s.with_distribution(distribution))
                 .and_then(|s| s.with_tiling(tiling))
                 .expect("multiband");
             let text = spec.to_string();
             assert_eq!(text.parse::<Spec>(), Ok(spec));
-            let m2 = Multiband::new(6, &TILE2, bands.clone(), distribution).with_tiling(tiling);
-            let m3 = Multiband::new(6, &TILE3, bands.clone(), distribution).with_tiling(tiling);
+            let m2 = Multiband::new(6, &TILE2, bands, distribution).with_tiling(tiling);
+            let m3 = Multiband::new(6, &TILE3, bands, distribution).with_tiling(tiling);
             same(&text, &spec.build::<2>().expect("2D"), &m2, &mut rng);
             same(&text, &spec.build::<3>().expect("3D"), &m3, &mut rng);
-            let q2 = Multiband::new(6, &TILE2_I16, bands.clone(), distribution).with_tiling(tiling);
-            let q3 = Multiband::new(6, &TILE3_I16, bands.clone(), distribution).with_tiling(tiling);
+            let q2 = Multiband::new(6, &TILE2_I16, bands, distribution).with_tiling(tiling);
+            let q3 = Multiband::new(6, &TILE3_I16, bands, distribution).with_tiling(tiling);
             let built2 = spec.build_with::<2, I16Tiles>().expect("2D");
             let built3 = spec.build_with::<3, I16Tiles>().expect("3D");
             same(&text, &built2, &q2, &mut rng);
@@ -237,7 +237,7 @@ fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
     );
     // No bands is the zero noise, and round-trips.
     let none = default
-        .with_bands(&Bands::new(3, &[]).expect("valid"))
+        .with_bands(Bands::new(3, &[]).expect("valid"))
         .expect("multiband");
     assert_eq!(none.to_string().parse::<Spec>(), Ok(none));
     let zero: f32 = none.build::<2>().expect("2D").sample([0.3, 0.4]);
@@ -264,7 +264,7 @@ fn random_spec(rng: &mut Rng) -> Spec {
             .collect();
         let first = (rng.next_u64() % 33) as i32 - 24;
         let bands = Bands::new(first, &weights).expect("in range");
-        spec = spec.with_bands(&bands).expect("multiband");
+        spec = spec.with_bands(bands).expect("multiband");
         if rng.next_u64().is_multiple_of(2) {
             spec = spec
                 .with_distribution(Distribution::Uniform)

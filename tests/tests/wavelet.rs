@@ -296,9 +296,9 @@ fn fixed_point_follows_f32() {
 fn multiband_has_variance_one_and_a_flat_uniform_distribution() {
     let mut rng = Rng::from_env(34);
     let bands = Bands::new(-1, &[1.0, 0.7, 0.5, 0.3]).unwrap();
-    let g2 = Multiband::new(2, &TILE2, bands.clone(), Distribution::Gaussian);
-    let g3 = Multiband::new(2, &TILE3, bands.clone(), Distribution::Gaussian);
-    let u3 = Multiband::new(2, &TILE3, bands.clone(), Distribution::Uniform);
+    let g2 = Multiband::new(2, &TILE2, bands, Distribution::Gaussian);
+    let g3 = Multiband::new(2, &TILE3, bands, Distribution::Gaussian);
+    let u3 = Multiband::new(2, &TILE3, bands, Distribution::Uniform);
     let (v2, _) = moments::<2>(&mut rng, 300_000, |p| g2.sample(p));
     let (v3, _) = moments::<3>(&mut rng, 300_000, |p| g3.sample(p));
     let (vu, mu) = moments::<3>(&mut rng, 300_000, |p| u3.sample(p));

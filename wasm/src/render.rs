@@ -81,7 +81,7 @@ fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
         NoiseKind::CNoise => fill_lattice::<R, _>(CNoise::new(s), p, size, values),
         NoiseKind::MNoise => fill_lattice::<R, _>(MNoise::<61>::new(s), p, size, values),
         NoiseKind::Wavelet => {
-            let m = Multiband::new(s, &WEB_TILE3, p.bands.clone(), p.distribution);
+            let m = Multiband::new(s, &WEB_TILE3, p.bands, p.distribution);
             if p.projected {
                 fill::<R, _>(&Projected(m), p, size, values)
             } else {

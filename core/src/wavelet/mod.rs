@@ -42,6 +42,7 @@ mod constmath;
 mod defaults;
 mod erf;
 mod multiband;
+pub(crate) use multiband::DEFAULT_BANDS;
 mod projected;
 mod quantized;
 mod tile;

@@ -40,11 +40,32 @@ pub const MAX_BANDS: usize = 16;
 ///
 /// Band `b` samples the noise band at frequency `2^b` relative to band 0, whose frequencies lie
 /// between ½ and 1 cycle per unit, like Perlin noise's.
-#[derive(Clone, Debug, PartialEq)]
+///
+/// Plain `Copy` data (a fixed array of [`MAX_BANDS`] weights and a count), so a
+/// [`Spec`](crate::spec::Spec) holds one as it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bands {
     first: i32,
-    weights: Vec<f32, MAX_BANDS>,
+    /// The first `count` entries are the weights; the rest stay 0 (so `PartialEq` compares
+    /// only the weights).
+    weights: [f32; MAX_BANDS],
+    count: u8,
 }
+
+/// [`Bands::default`], usable in `const` code.
+pub(crate) const DEFAULT_BANDS: Bands = {
+    let mut weights = [0.0; MAX_BANDS];
+    weights[0] = 1.0;
+    weights[1] = 0.5;
+    weights[2] = 0.25;
+    weights[3] = 0.125;
+    weights[4] = 0.0625;
+    Bands {
+        first: 0,
+        weights,
+        count: 5,
+    }
+};
 
 impl Bands {
     /// Bands `first, first + 1, …` with the given weights.
@@ -75,15 +96,18 @@ impl Bands {
                 max: MAX_BANDS,
             });
         }
-        let mut v = Vec::new();
-        for (index, &value) in weights.iter().enumerate() {
+        let mut v = [0.0; MAX_BANDS];
+        for (index, (&value, slot)) in weights.iter().zip(&mut v).enumerate() {
             if !value.is_finite() || value.abs() > 1e6 {
                 return Err(Error::BandWeight { index, value });
             }
-            // Cannot fail: the length was checked.
-            let _ = v.push(value);
+            *slot = value;
         }
-        Ok(Self { first, weights: v })
+        Ok(Self {
+            first,
+            weights: v,
+            count: weights.len() as u8,
+        })
     }
 
     /// `count` bands from `first` with weights `1, gain, gain², …` (fractal noise).
@@ -116,19 +140,15 @@ impl Bands {
     /// The weights.
     #[must_use]
     pub fn weights(&self) -> &[f32] {
-        &self.weights
+        // `count` is at most MAX_BANDS by construction.
+        self.weights.get(..usize::from(self.count)).unwrap_or(&[])
     }
 }
 
 impl Default for Bands {
     /// Five bands from 0 with weights `1, ½, ¼, ⅛, 1/16`.
     fn default() -> Self {
-        let mut weights = Vec::new();
-        for w in [1.0, 0.5, 0.25, 0.125, 0.0625] {
-            // Cannot fail: 5 of at most 16 (no `expect`: sampling stays provably panic-free).
-            let _ = weights.push(w);
-        }
-        Self { first: 0, weights }
+        DEFAULT_BANDS
     }
 }
 
