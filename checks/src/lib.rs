@@ -102,7 +102,17 @@ const fn seed(base: Base) -> u32 {
     if base.is_wavelet() { 3 } else { 1 }
 }
 
-/// How many checksums [`Base::ALL`] gives: one per base and dimension it has.
+/// Every base in each of its dimensions, in the order of the checksums.
+fn bases_and_dims() -> impl Iterator<Item = (Base, usize)> {
+    Base::ALL.into_iter().flat_map(|base| {
+        (1..=4)
+            .filter(move |&d| base.has_dimension(d))
+            .map(move |d| (base, d))
+    })
+}
+
+/// How many checksums [`Base::ALL`] gives: one per base and dimension it has (as
+/// [`bases_and_dims`], in `const`).
 const BASE_CHECKS: usize = {
     let mut n = 0;
     let mut i = 0;
@@ -119,10 +129,6 @@ const BASE_CHECKS: usize = {
     n
 };
 
-/// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
-/// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 5;
-
 /// Multiband noise with three bands from -1 and uniform values (also sampled projected).
 fn uniform_multiband() -> Spec {
     let bands = Bands::new(-1, &[0.5, 1.0, 0.5]).unwrap_or_default();
@@ -132,6 +138,10 @@ fn uniform_multiband() -> Spec {
         .and_then(|s| s.with_distribution(Distribution::Uniform))
         .unwrap_or(spec)
 }
+
+/// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
+/// spec, its dimensions and the range of the points.
+const COMPOSED: usize = 5;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -189,10 +199,8 @@ fn all<R: Bits>(out: &mut [u32]) {
         k += 1;
     };
     // Every base in each of its dimensions: a noise added to `Base` is checked here unasked.
-    for base in Base::ALL {
-        for dims in (1..=4).filter(|&d| base.has_dimension(d)) {
-            push(spec_checksum::<R>(&Spec::new(base, seed(base)), dims, 200));
-        }
+    for (base, dims) in bases_and_dims() {
+        push(spec_checksum::<R>(&Spec::new(base, seed(base)), dims, 200));
     }
     for (_, spec, dims, range) in composed() {
         push(spec_checksum::<R>(&spec, dims, range));
@@ -247,23 +255,12 @@ impl core::fmt::Display for Name {
 /// The name of each checksum, in order (the same for both number types).
 pub fn names() -> [Name; COUNT] {
     let mut names = [Name::Other(""); COUNT];
-    let mut one = names.iter_mut().take(COUNT / 2);
-    for base in Base::ALL {
-        for dims in (1..=4).filter(|&d| base.has_dimension(d)) {
-            if let Some(n) = one.next() {
-                *n = Name::Base(base, dims);
-            }
-        }
-    }
-    for (name, ..) in composed() {
-        if let Some(n) = one.next() {
-            *n = Name::Other(name);
-        }
-    }
-    for other in OTHER {
-        if let Some(n) = one.next() {
-            *n = Name::Other(other);
-        }
+    let one = bases_and_dims()
+        .map(|(base, dims)| Name::Base(base, dims))
+        .chain(composed().map(|(name, ..)| Name::Other(name)))
+        .chain(OTHER.map(Name::Other));
+    for (slot, name) in names.iter_mut().zip(one) {
+        *slot = name;
     }
     let (fixed, float) = names.split_at_mut(COUNT / 2);
     float.copy_from_slice(fixed);
