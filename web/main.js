@@ -1,5 +1,5 @@
 // The bandnoise demo page: controls → wasm Params → Demo.render → canvases.
-import init, { Demo, Params } from './pkg/bandnoise_wasm.js';
+import init, { Demo, Params, kinds } from './pkg/bandnoise_wasm.js';
 
 const SIZE = 256;
 const $ = (id) => document.getElementById(id);
@@ -17,10 +17,29 @@ function number(id) {
   return text === '' ? NaN : Number(text);
 }
 
+// Labels for the noises the wasm module offers (its list comes from bandnoise's description;
+// a noise without a label here shows its name).
+const LABELS = {
+  perlin: 'Perlin (improved, 2002)',
+  original: 'Perlin (original, 1985)',
+  value: 'value noise',
+  cnoise: 'Olano cNoise',
+  mnoise: 'Olano mNoise',
+  mnoise4093: 'Olano mNoise, M = 4093',
+  wavelet: 'wavelet, one band (Cook & DeRose)',
+  multiband: 'wavelet, multiband (Cook & DeRose)',
+};
+
+function fillKinds() {
+  $('kind').replaceChildren(...kinds().map((name) => new Option(LABELS[name] || name, name)));
+}
+
 function params() {
+  // An empty period is no period.
+  const period = $('period').value.trim() === '' ? 0 : number('period');
   return new Params(
     $('kind').value, $('number').value, number('seed'), number('zoom'),
-    state.pan[0], state.pan[1], number('time'), $('fractal').value,
+    state.pan[0], state.pan[1], number('time'), period, $('fractal').value,
     number('octaves'), number('lacunarity'), number('gain'),
     new Float32Array(state.bandWeights), $('distribution').value,
     $('projected').checked, $('palette').value,
@@ -140,6 +159,7 @@ function wire() {
 
 await init();
 demo = new Demo(SIZE);
+fillKinds();
 drawBands();
 wire();
 render();

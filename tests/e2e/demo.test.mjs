@@ -80,7 +80,10 @@ await test('the page renders noise with non-trivial variance', async () => {
 
 await test('every noise kind gives a different image', async () => {
   const hashes = new Map();
-  for (const kind of ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'wavelet']) {
+  // The page lists the noises the wasm module takes from bandnoise's description.
+  const kinds = await page.evaluate(() => [...document.getElementById('kind').options].map((o) => o.value));
+  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband']);
+  for (const kind of kinds) {
     await set('kind', kind);
     const s = await canvas('noise');
     assert.ok(s.variance > 200, `${kind}: variance ${s.variance}`);
@@ -91,7 +94,7 @@ await test('every noise kind gives a different image', async () => {
 });
 
 await test('dragging a band-weight bar changes the spectrum', async () => {
-  await set('kind', 'wavelet');
+  await set('kind', 'multiband');
   const before = await canvas('spectrum');
   const n = await renders();
   await dragBand(7, 1.0);
@@ -103,6 +106,21 @@ await test('dragging a band-weight bar changes the spectrum', async () => {
   for (let i = 0; i < after.red.length; i++) diff += Math.abs(after.red[i] - before.red[i]);
   assert.ok(diff / after.red.length > 2, `mean spectrum change ${diff / after.red.length}`);
   await page.screenshot({ path: `${artifacts}/demo-wavelet-bands.png` });
+});
+
+await test('a periodic noise repeats after its period', async () => {
+  await set('kind', 'perlin');
+  await set('period', '2');
+  // The canvas spans 256 / 32 = 8 cells: four periods side by side, the same pixels.
+  const s = await canvas('noise');
+  for (let y = 0; y < 256; y += 17) {
+    for (let x = 0; x < 192; x += 13) {
+      assert.equal(s.red[y * 256 + x], s.red[y * 256 + x + 64], `(${x}, ${y})`);
+    }
+  }
+  await page.screenshot({ path: `${artifacts}/demo-periodic.png` });
+  await set('period', '');
+  assert.equal(await message(), '');
 });
 
 await test('f32 and fixed point give nearly the same image', async () => {
@@ -125,6 +143,7 @@ await test('bad input shows a message and leaves the page working', async () => 
     octaves: ['0', '100', '2.5', ''],
     lacunarity: ['NaN', '-1', '1e9'],
     gain: ['5', 'NaN', ''],
+    period: ['0.5', '-2', '70000', 'abc'],
   };
   await set('fractal', 'fbm');
   for (const [field, values] of Object.entries(bad)) {
@@ -140,7 +159,7 @@ await test('bad input shows a message and leaves the page working', async () => 
   }
   await set('fractal', 'none');
   // Every band weight dragged to zero.
-  await set('kind', 'wavelet');
+  await set('kind', 'multiband');
   for (let i = 0; i < 8; i++) await dragBand(i, 0);
   await page.waitForFunction(() => window.bandnoise.lastError.includes('band weight'));
   await page.screenshot({ path: `${artifacts}/demo-bad-input.png` });

@@ -582,6 +582,7 @@ fn consumers_take_their_noises_from_the_description() {
         ("fuzz/fuzz_targets/spec.rs", "the description's fuzz target"),
         ("tests/src/lib.rs", "the test helper Lattice"),
         ("gallery/src/main.rs", "the gallery"),
+        ("wasm/src/params.rs", "the browser demo"),
     ];
     for (path, what) in consumers {
         let text = std::fs::read_to_string(format!("{root}/{path}")).expect(path);

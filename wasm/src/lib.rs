@@ -10,5 +10,5 @@ mod palette;
 mod params;
 mod render;
 
-pub use params::Params;
+pub use params::{Params, kinds};
 pub use render::Demo;

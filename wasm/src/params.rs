@@ -1,57 +1,41 @@
-//! What the page asks for, checked.
+//! What the page asks for, checked, as a [`Spec`]: the noises the page offers are the
+//! description's bases ([`kinds`]), so a noise added to `bandnoise::spec` appears in the demo.
 
 use bandnoise::Error;
 use bandnoise::fractal::{Kind, Octaves};
+use bandnoise::spec::{Base, Spec};
 use bandnoise::wavelet::{Bands, Distribution};
 use wasm_bindgen::prelude::*;
 
-/// A noise the demo can show.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum NoiseKind {
-    /// Perlin's improved noise.
-    Perlin,
-    /// Perlin's 1985 noise.
-    Original,
-    /// Value noise.
-    Value,
-    /// Olano's cNoise.
-    CNoise,
-    /// Olano's mNoise.
-    MNoise,
-    /// Cook & DeRose's multiband wavelet noise.
-    Wavelet,
+/// The names of the noises the demo can show, in the description's order: every
+/// [`Base`] with a 3D form (the page's third axis is time).
+#[wasm_bindgen]
+pub fn kinds() -> Vec<String> {
+    Base::ALL
+        .iter()
+        .filter(|b| b.has_dimension(3))
+        .map(|b| b.name().into())
+        .collect()
 }
 
-impl NoiseKind {
-    fn parse(s: &str) -> Result<Self, String> {
-        Ok(match s {
-            "perlin" => Self::Perlin,
-            "original" => Self::Original,
-            "value" => Self::Value,
-            "cnoise" => Self::CNoise,
-            "mnoise" => Self::MNoise,
-            "wavelet" => Self::Wavelet,
-            _ => return Err(format!("unknown noise kind {s:?}")),
-        })
-    }
+fn kind(name: &str) -> Result<Base, String> {
+    Base::ALL
+        .into_iter()
+        .find(|b| b.has_dimension(3) && b.name() == name)
+        .ok_or_else(|| format!("unknown noise kind \"{name}\" (see kinds())"))
 }
 
 /// The settings of one frame, built and validated from JavaScript.
 #[wasm_bindgen]
 #[derive(Clone, Debug)]
 pub struct Params {
-    pub(crate) kind: NoiseKind,
+    /// The noise, its seed, period, bands and fractal sum.
+    pub(crate) spec: Spec,
     pub(crate) fixed: bool,
-    pub(crate) seed: u32,
     pub(crate) zoom: f32,
     pub(crate) pan: [f32; 2],
     pub(crate) time: f32,
-    pub(crate) fractal: Option<Kind>,
-    pub(crate) octaves: u32,
-    pub(crate) lacunarity: f32,
-    pub(crate) gain: f32,
-    pub(crate) bands: Bands,
-    pub(crate) distribution: Distribution,
+    /// Wavelet noise projected along the time axis rather than sliced.
     pub(crate) projected: bool,
     pub(crate) marble: bool,
 }
@@ -97,7 +81,13 @@ fn describe(e: Error) -> String {
             "band weight {} at {index} must be finite and at most 1e6 in magnitude",
             num(value.into())
         ),
-        // Octaves::new and Bands::new refuse only for the reasons above.
+        Error::Period { axis, period } => {
+            format!("period {period} along axis {axis} is outside 1..=65536 cells")
+        }
+        Error::NotPeriodic(noise) => {
+            format!("{noise} noise is not a lattice noise and cannot be wrapped to a period")
+        }
+        // The page asks the core only for what is refused above.
         _ => "invalid settings".into(),
     }
 }
@@ -106,23 +96,28 @@ fn describe(e: Error) -> String {
 impl Params {
     /// Checks and builds the settings.
     ///
+    /// `period` is the period in cells of every axis (time included, so an animation loops),
+    /// or 0 for none.
+    ///
     /// # Errors
     ///
-    /// A message naming the first bad field: an unknown kind, fractal, number type,
-    /// distribution or palette; a zoom that is not a positive finite number (at most 1e6);
-    /// a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; band weights that
-    /// are not finite, too many, or all zero for wavelet noise; and the core's own errors.
-    /// (JavaScript receives the message as a thrown string.)
+    /// A message naming the first bad field: an unknown kind (see [`kinds`]), fractal, number
+    /// type, distribution or palette; a zoom that is not a positive finite number (at most
+    /// 1e6); a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; a period that
+    /// is not a whole number in 0..=65536, or given for wavelet noise; band weights that are
+    /// not finite, too many, or all zero for multiband noise; projection asked for a lattice
+    /// noise; and the core's own errors. (JavaScript receives the message as a thrown string.)
     #[wasm_bindgen(constructor)]
     #[allow(clippy::too_many_arguments)]
     pub fn new(
-        kind: &str,
+        kind_name: &str,
         number: &str,
         seed: f64,
         zoom: f64,
         pan_x: f64,
         pan_y: f64,
         time: f64,
+        period: f64,
         fractal: &str,
         octaves: f64,
         lacunarity: f64,
@@ -132,13 +127,13 @@ impl Params {
         projected: bool,
         palette: &str,
     ) -> Result<Params, String> {
-        let kind = NoiseKind::parse(kind)?;
+        let base = kind(kind_name)?;
         let fixed = match number {
             "f32" => false,
             "fixed" => true,
             _ => {
                 return Err(format!(
-                    "number type must be \"f32\" or \"fixed\", not {number:?}"
+                    "number type must be \"f32\" or \"fixed\", not \"{number}\""
                 ));
             }
         };
@@ -149,6 +144,7 @@ impl Params {
                 num(seed)
             ));
         }
+        let mut spec = Spec::new(base, seed as u32);
         let zoom = finite("zoom", zoom)?;
         if !(zoom > 0.0 && zoom <= 1e6) {
             return Err(format!(
@@ -158,14 +154,23 @@ impl Params {
         }
         let pan = [finite("pan x", pan_x)?, finite("pan y", pan_y)?];
         let time = finite("time", time)?;
-        let fractal = match fractal {
+        if !(period.is_finite() && (0.0..=65536.0).contains(&period) && period.fract() == 0.0) {
+            return Err(format!(
+                "period must be a whole number of cells from 1 to 65536 (0: none), not {}",
+                num(period)
+            ));
+        }
+        if period > 0.0 {
+            spec = spec.with_period(&[period as u32; 3]).map_err(describe)?;
+        }
+        let kind = match fractal {
             "none" => None,
             "fbm" => Some(Kind::Fbm),
             "turbulence" => Some(Kind::Turbulence),
             "ridged" => Some(Kind::Ridged),
             _ => {
                 return Err(format!(
-                    "fractal must be none, fbm, turbulence or ridged, not {fractal:?}"
+                    "fractal must be none, fbm, turbulence or ridged, not \"{fractal}\""
                 ));
             }
         };
@@ -177,38 +182,45 @@ impl Params {
         }
         let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
         // The core checks the ranges and says why.
-        Octaves::new(octaves as u32, lacunarity, gain).map_err(describe)?;
-        let bands = Bands::new(-3, band_weights).map_err(describe)?;
-        if kind == NoiseKind::Wavelet && band_weights.iter().all(|w| *w == 0.0) {
-            return Err("every band weight is zero: raise at least one band".into());
+        let octaves = Octaves::new(octaves as u32, lacunarity, gain).map_err(describe)?;
+        if let Some(kind) = kind {
+            spec = spec.with_fractal(kind, octaves);
         }
         let distribution = match distribution {
             "gaussian" => Distribution::Gaussian,
             "uniform" => Distribution::Uniform,
             _ => {
                 return Err(format!(
-                    "distribution must be gaussian or uniform, not {distribution:?}"
+                    "distribution must be gaussian or uniform, not \"{distribution}\""
                 ));
             }
         };
+        let bands = Bands::new(-3, band_weights).map_err(describe)?;
+        if base == Base::Multiband {
+            if band_weights.iter().all(|w| *w == 0.0) {
+                return Err("every band weight is zero: raise at least one band".into());
+            }
+            spec = spec
+                .with_bands(bands)
+                .and_then(|s| s.with_distribution(distribution))
+                .map_err(describe)?;
+        }
+        if projected && !base.is_wavelet() {
+            return Err(format!(
+                "projection applies to wavelet and multiband noise, not {base}"
+            ));
+        }
         let marble = match palette {
             "grey" => false,
             "marble" => true,
-            _ => return Err(format!("palette must be grey or marble, not {palette:?}")),
+            _ => return Err(format!("palette must be grey or marble, not \"{palette}\"")),
         };
         Ok(Params {
-            kind,
+            spec,
             fixed,
-            seed: seed as u32,
             zoom,
             pan,
             time,
-            fractal,
-            octaves: octaves as u32,
-            lacunarity,
-            gain,
-            bands,
-            distribution,
             projected,
             marble,
         })

@@ -1,9 +1,12 @@
 //! One frame: sample the chosen noise over the view, colour it, and keep what the page shows.
 
 use bandnoise::batch::Grid;
-use bandnoise::fractal::{Fractal, Octaves};
-use bandnoise::lattice::{CNoise, MNoise, OriginalPerlin, Perlin, ValueNoise};
-use bandnoise::wavelet::{DEFAULT_TILE_SEED, Multiband, QuantizedTile3, TILE2_I16, Tile3, Wavelet};
+use bandnoise::fractal::Fractal;
+use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::spec::{Base, Tiles};
+use bandnoise::wavelet::{
+    DEFAULT_TILE_SEED, Multiband, QuantizedTile2, QuantizedTile3, TILE2_I16, Tile3, Wavelet,
+};
 use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 use wasm_bindgen::Clamped;
 use wasm_bindgen::prelude::*;
@@ -11,12 +14,28 @@ use web_sys::{CanvasRenderingContext2d, ImageData};
 
 use crate::fft::log_spectrum;
 use crate::palette::color;
-use crate::params::{NoiseKind, Params};
+use crate::params::Params;
 
 /// The demo's 3D wavelet tile: 16³ `i16` coefficients (8 KiB) rather than the crate's 128 KiB
 /// default, to keep the module small; hashed orientations hide its repetition.
 static WEB_TILE3: QuantizedTile3<16> =
     QuantizedTile3::quantize(&Tile3::generate(DEFAULT_TILE_SEED));
+
+/// The wavelet tiles the demo's specs are built over: the crate's quantized 2D tile and the
+/// small 3D one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct WebTiles;
+
+impl Tiles for WebTiles {
+    type Two = QuantizedTile2<64>;
+    type Three = QuantizedTile3<16>;
+    fn two() -> &'static QuantizedTile2<64> {
+        &TILE2_I16
+    }
+    fn three() -> &'static QuantizedTile3<16> {
+        &WEB_TILE3
+    }
+}
 
 /// Histogram bins over `[-4σ, 4σ]` of the frame's standardised values.
 pub const HISTOGRAM_BINS: usize = 64;
@@ -37,56 +56,71 @@ pub struct Demo {
 
 /// Samples `noise` at every pixel of the view into `values`.
 fn fill<R: Real, N: Noise<R, 3>>(noise: &N, p: &Params, size: usize, values: &mut [f32]) {
+    fill_with(&|q| noise.sample(q), p, size, values)
+}
+
+/// [`fill`] through a `dyn` closure: one loop per number type rather than one per noise type
+/// keeps the module small, for an indirect call per sample.
+fn fill_with<R: Real>(sample: &dyn Fn([R; 3]) -> R, p: &Params, size: usize, values: &mut [f32]) {
     let half = size as f32 / 2.0;
     let t = R::from_f32(p.time);
     for (j, row) in values.chunks_mut(size).enumerate() {
         let y = R::from_f32(p.pan[1] + (j as f32 - half) / p.zoom);
         for (i, v) in row.iter_mut().enumerate() {
             let x = R::from_f32(p.pan[0] + (i as f32 - half) / p.zoom);
-            *v = noise.sample([x, y, t]).to_f32();
+            *v = sample([x, y, t]).to_f32();
         }
     }
 }
 
-/// Fills with a lattice noise, plain or in a fractal sum.
-fn fill_lattice<R: Real, N: Noise<R, 3>>(noise: N, p: &Params, size: usize, values: &mut [f32]) {
-    match p.fractal {
-        None => fill(&noise, p, size, values),
-        Some(kind) => {
-            // Checked when the Params were built.
-            let octaves = Octaves::new(p.octaves, p.lacunarity, p.gain).unwrap_or_default();
-            fill(&Fractal::new(noise, octaves, kind), p, size, values)
-        }
-    }
+/// Wavelet noise projected along z (the time axis) as a 3D `Noise`: one type for both
+/// wavelet bases, so each fill loop is compiled once for them.
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one value per frame, on the stack"
+)]
+enum Projected {
+    Wavelet(Wavelet<'static, QuantizedTile3<16>>),
+    Multiband(Multiband<'static, QuantizedTile3<16>>),
 }
 
-/// Projected multiband noise as a 3D `Noise` (projection along z, the time axis).
-struct Projected<'a>(Multiband<'a, QuantizedTile3<16>>);
-
-impl<R: Real> Noise<R, 3> for Projected<'_> {
+impl<R: Real> Noise<R, 3> for Projected {
     fn sample(&self, p: [R; 3]) -> R {
-        self.0.sample_projected(p, [R::ZERO, R::ZERO, R::ONE])
+        let z = [R::ZERO, R::ZERO, R::ONE];
+        match self {
+            Projected::Wavelet(n) => n.sample_projected(p, z),
+            Projected::Multiband(n) => n.sample_projected(p, z),
+        }
     }
     fn amplitude_bound(&self) -> f32 {
-        self.0.projected_bound()
+        match self {
+            Projected::Wavelet(n) => ProjectedNoise::<R>::projected_bound(n),
+            Projected::Multiband(n) => ProjectedNoise::<R>::projected_bound(n),
+        }
     }
 }
 
 fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
-    let s = p.seed;
-    match p.kind {
-        NoiseKind::Perlin => fill_lattice::<R, _>(Perlin::new(s), p, size, values),
-        NoiseKind::Original => fill_lattice::<R, _>(OriginalPerlin::new(s), p, size, values),
-        NoiseKind::Value => fill_lattice::<R, _>(ValueNoise::new(s), p, size, values),
-        NoiseKind::CNoise => fill_lattice::<R, _>(CNoise::new(s), p, size, values),
-        NoiseKind::MNoise => fill_lattice::<R, _>(MNoise::<61>::new(s), p, size, values),
-        NoiseKind::Wavelet => {
-            let m = Multiband::new(s, &WEB_TILE3, p.bands, p.distribution);
-            if p.projected {
-                fill::<R, _>(&Projected(m), p, size, values)
-            } else {
-                fill::<R, _>(&m, p, size, values)
-            }
+    let s = &p.spec;
+    // Projection is a way of sampling, not a noise of its own: the spec names the noise.
+    let projected = match s.base() {
+        Base::Wavelet if p.projected => {
+            Projected::Wavelet(Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling()))
+        }
+        Base::Multiband if p.projected => Projected::Multiband(
+            Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution())
+                .with_tiling(s.tiling()),
+        ),
+        // Never refused: the page's kinds have a 3D form and its period has 3 axes.
+        _ => match s.build_with::<3, WebTiles>() {
+            Ok(noise) => return fill::<R, _>(&noise, p, size, values),
+            Err(_) => return values.fill(0.0),
+        },
+    };
+    match s.fractal() {
+        None => fill::<R, _>(&projected, p, size, values),
+        Some((kind, octaves)) => {
+            fill::<R, _>(&Fractal::new(projected, octaves, kind), p, size, values)
         }
     }
 }
@@ -255,7 +289,7 @@ pub fn bench_sum(kind: &str, count: u32) -> Result<f64, JsValue> {
         "perlin-batch" => Ok(bench_rows(&perlin, count)),
         "mnoise-batch" => Ok(bench_rows(&mnoise, count)),
         _ => Err(JsValue::from_str(&format!(
-            "unknown benchmark kind {kind:?}"
+            "unknown benchmark kind \"{kind}\""
         ))),
     }
 }

@@ -11,11 +11,66 @@ wasm_bindgen_test_configure!(run_in_browser);
 
 const BANDS: [f32; 8] = [0.0, 0.0, 0.2, 0.5, 1.0, 0.5, 0.25, 0.12];
 
+/// What the page sends, with its defaults; a test changes a field and calls `build`.
+#[derive(Clone, Copy)]
+struct Args<'a> {
+    kind: &'a str,
+    number: &'a str,
+    seed: f64,
+    zoom: f64,
+    pan: [f64; 2],
+    time: f64,
+    period: f64,
+    fractal: &'a str,
+    octaves: f64,
+    bands: &'a [f32],
+    projected: bool,
+}
+
+const ARGS: Args = Args {
+    kind: "perlin",
+    number: "f32",
+    seed: 3.0,
+    zoom: 32.0,
+    pan: [0.5, -1.5],
+    time: 0.25,
+    period: 0.0,
+    fractal: "none",
+    octaves: 6.0,
+    bands: &BANDS,
+    projected: false,
+};
+
+impl Args<'_> {
+    fn build(self) -> Result<Params, String> {
+        Params::new(
+            self.kind,
+            self.number,
+            self.seed,
+            self.zoom,
+            self.pan[0],
+            self.pan[1],
+            self.time,
+            self.period,
+            self.fractal,
+            self.octaves,
+            1.99,
+            0.5,
+            self.bands,
+            "gaussian",
+            self.projected,
+            "grey",
+        )
+    }
+}
+
 fn params(kind: &str, number: &str) -> Result<Params, String> {
-    Params::new(
-        kind, number, 3.0, 32.0, 0.5, -1.5, 0.25, "none", 6.0, 1.99, 0.5, &BANDS, "gaussian",
-        false, "grey",
-    )
+    Args {
+        kind,
+        number,
+        ..ARGS
+    }
+    .build()
 }
 
 fn canvas() -> CanvasRenderingContext2d {
@@ -30,7 +85,9 @@ fn canvas() -> CanvasRenderingContext2d {
 fn every_noise_renders_and_draws() {
     let mut demo = Demo::new(64).unwrap();
     let ctx = canvas();
-    for kind in ["perlin", "original", "value", "cnoise", "mnoise", "wavelet"] {
+    let kinds = bandnoise_wasm::kinds();
+    assert_eq!(kinds.len(), 8, "{kinds:?}");
+    for kind in &kinds {
         for number in ["f32", "fixed"] {
             demo.render(&params(kind, number).unwrap());
             assert!(demo.std_dev() > 0.01, "{kind} {number} is flat");
@@ -59,51 +116,125 @@ fn fixed_point_and_f32_give_nearly_the_same_frame() {
     assert!((a.mean() - b.mean()).abs() < 1e-3 && (a.std_dev() - b.std_dev()).abs() < 1e-3);
 }
 
+/// A period, a fractal sum and projection render too.
+#[wasm_bindgen_test]
+fn periodic_fractal_and_projected_noise_render() {
+    let mut demo = Demo::new(32).unwrap();
+    for args in [
+        Args {
+            period: 4.0,
+            fractal: "fbm",
+            ..ARGS
+        },
+        Args {
+            kind: "multiband",
+            projected: true,
+            fractal: "ridged",
+            octaves: 2.0,
+            ..ARGS
+        },
+        Args {
+            kind: "wavelet",
+            number: "fixed",
+            projected: true,
+            ..ARGS
+        },
+    ] {
+        demo.render(&args.build().unwrap());
+        assert!(demo.std_dev() > 0.01, "{} is flat", args.kind);
+    }
+    // A period of 4 cells: the frame (zoom 32, 32 pixels: one cell) at pan x and x + 4 is the
+    // same.
+    let (mut a, mut b) = (Demo::new(32).unwrap(), Demo::new(32).unwrap());
+    let periodic = Args {
+        period: 4.0,
+        ..ARGS
+    };
+    a.render(&periodic.build().unwrap());
+    b.render(
+        &Args {
+            pan: [4.5, -1.5],
+            ..periodic
+        }
+        .build()
+        .unwrap(),
+    );
+    assert_eq!(a.mean().to_bits(), b.mean().to_bits());
+    assert_eq!(a.std_dev().to_bits(), b.std_dev().to_bits());
+}
+
 #[wasm_bindgen_test]
 fn bad_parameters_are_refused_with_a_message() {
-    let bad = |r: Result<Params, String>| r.err().unwrap_or_default();
-    let msg = bad(Params::new(
-        "nope", "f32", 0.0, 32.0, 0.0, 0.0, 0.0, "none", 6.0, 2.0, 0.5, &BANDS, "gaussian", false,
-        "grey",
-    ));
-    assert!(msg.contains("unknown noise kind"), "{msg}");
-    let msg = bad(Params::new(
-        "perlin",
-        "f32",
-        f64::NAN,
-        32.0,
-        0.0,
-        0.0,
-        0.0,
-        "none",
-        6.0,
-        2.0,
-        0.5,
-        &BANDS,
-        "gaussian",
-        false,
-        "grey",
-    ));
-    assert!(msg.contains("seed"), "{msg}");
-    let msg = bad(Params::new(
-        "perlin", "f32", 0.0, -1.0, 0.0, 0.0, 0.0, "none", 6.0, 2.0, 0.5, &BANDS, "gaussian",
-        false, "grey",
-    ));
-    assert!(msg.contains("zoom"), "{msg}");
-    let msg = bad(Params::new(
-        "perlin", "f32", 0.0, 32.0, 1e300, 0.0, 0.0, "none", 6.0, 2.0, 0.5, &BANDS, "gaussian",
-        false, "grey",
-    ));
-    assert!(msg.contains("pan"), "{msg}");
-    let msg = bad(Params::new(
-        "perlin", "f32", 0.0, 32.0, 0.0, 0.0, 0.0, "fbm", 99.0, 2.0, 0.5, &BANDS, "gaussian",
-        false, "grey",
-    ));
-    assert!(msg.contains("octaves"), "{msg}");
-    let msg = bad(Params::new(
-        "wavelet", "f32", 0.0, 32.0, 0.0, 0.0, 0.0, "none", 6.0, 2.0, 0.5, &[0.0; 8], "gaussian",
-        false, "grey",
-    ));
-    assert!(msg.contains("band weight is zero"), "{msg}");
+    let refused = |args: Args, needle: &str| {
+        let msg = args.build().err().unwrap_or_default();
+        assert!(msg.contains(needle), "{needle}: {msg}");
+    };
+    refused(
+        Args {
+            kind: "nope",
+            ..ARGS
+        },
+        "unknown noise kind",
+    );
+    refused(
+        Args {
+            seed: f64::NAN,
+            ..ARGS
+        },
+        "seed",
+    );
+    refused(Args { zoom: -1.0, ..ARGS }, "zoom");
+    refused(
+        Args {
+            pan: [1e300, 0.0],
+            ..ARGS
+        },
+        "pan",
+    );
+    refused(
+        Args {
+            fractal: "fbm",
+            octaves: 99.0,
+            ..ARGS
+        },
+        "octaves",
+    );
+    refused(
+        Args {
+            kind: "multiband",
+            bands: &[0.0; 8],
+            ..ARGS
+        },
+        "band weight is zero",
+    );
+    refused(
+        Args {
+            period: 1e5,
+            ..ARGS
+        },
+        "period",
+    );
+    refused(
+        Args {
+            period: f64::NAN,
+            ..ARGS
+        },
+        "period",
+    );
+    refused(
+        Args {
+            kind: "wavelet",
+            period: 8.0,
+            ..ARGS
+        },
+        "not a lattice noise",
+    );
+    refused(
+        Args {
+            projected: true,
+            ..ARGS
+        },
+        "projection applies",
+    );
     assert!(Demo::new(100).is_err());
 }
