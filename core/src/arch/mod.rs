@@ -6,7 +6,7 @@
 //!
 //! | kernel | targets | fallback |
 //! |---|---|---|
-//! | [`perlin2`], [`perlin3`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture) | `None`: the shared kernel of [`lattice`](crate::lattice) |
+//! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture) | `None`: the shared kernel of [`lattice`](crate::lattice) |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
 //! so the choice changes speed only, never a bit of a result (each kernel's tests compare them).
@@ -27,7 +27,7 @@ use portable as selected;
 //
 // * `PERLIN_POINT`: whether this target has the Perlin point kernels (a constant, so callers
 //   skip the `f32` conversions where it has not).
-// * `perlin2(p, x, y)`, `perlin3(p, x, y, z)`: Perlin's improved noise at one point over the
+// * `perlin2(p, x, y)`, `perlin3(p, x, y, z)`, `perlin4(p, x, y, z, w)`: Perlin's improved noise at one point over the
 //   doubled permutation `p` (`p[i + 256] = p[i]`), bit-identical to the shared kernel; `None`
 //   where the target has no kernel or leaves the point to the shared one (non-finite or beyond
 //   ±2³¹).
@@ -35,5 +35,5 @@ use portable as selected;
 //   permutation (16 KiB on x86-64, empty where no kernel uses it), and `perlin2_paired`,
 //   `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
 pub(crate) use selected::{
-    PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired,
+    PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
 };

@@ -13,6 +13,11 @@ pub(crate) fn perlin3(_: &[u8; 512], _: f32, _: f32, _: f32) -> Option<f32> {
     None
 }
 
+#[inline]
+pub(crate) fn perlin4(_: &[u8; 512], _: f32, _: f32, _: f32, _: f32) -> Option<f32> {
+    None
+}
+
 /// No kernel uses a seed's gradient pairs here: an empty table.
 #[derive(Clone)]
 pub(crate) struct PerlinPairs;

@@ -1,14 +1,16 @@
 //! The x86-64 kernels of [`arch`](super) (SSE2, which every x86-64 processor has).
 //!
-//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D and 3D, in
-//! `f32`: the axes split and faded together, and the 4 (2D) or 8 (3D) corner dot products and
-//! the lerps in 4-lane vectors. The point kernel of [`sample_lattice`] does the same steps one
-//! number at a time.
+//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D, 3D and 4D, in
+//! `f32`: the axes split and faded together, and the 4 (2D), 8 (3D) or 16 (4D) corner dot
+//! products and the lerps in 4-lane vectors. The point kernel of [`sample_lattice`] does the
+//! same steps one number at a time.
 //!
 //! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
 //! then a gradient), and every lerp waits for the one before. The gradients of two neighbouring
 //! hash values come from one row of a static table ([`PAIR_ROWS`]), already split by axis, so
-//! the vectors need no transposition.
+//! the vectors need no transposition. In 4D (32 gradients, a pair table would be 32 KiB) each
+//! corner's gradient is one row of [`GRAD4_ROWS`], and four rows are transposed into the
+//! vectors of their components.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
@@ -23,11 +25,11 @@ use safe_arch::{
     convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
     get_i32_from_m128i_s, load_unaligned_m128, m128, move_high_low_m128, move_low_high_m128,
     move_mask_m128, mul_m128, mul_m128_s, set_splat_i32_m128i, set_splat_m128,
-    shuffle_abi_f32_all_m128, sub_m128, sub_m128_s, truncate_m128_to_m128i, unpack_high_m128,
-    unpack_low_m128, zeroed_m128,
+    shuffle_abi_f32_all_m128, sub_m128, sub_m128_s, transpose_four_m128, truncate_m128_to_m128i,
+    unpack_high_m128, unpack_low_m128, zeroed_m128,
 };
 
-use crate::lattice::perlin::GRAD3;
+use crate::lattice::perlin::{GRAD3, grad4};
 
 pub(crate) const PERLIN_POINT: bool = true;
 
@@ -47,6 +49,15 @@ pub(crate) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
         pairs: &PAIR_ROWS,
     }
     .sample3(x, y, z)
+}
+
+#[inline]
+pub(crate) fn perlin4(p: &[u8; 512], x: f32, y: f32, z: f32, w: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample4(x, y, z, w)
 }
 
 #[inline]
@@ -140,6 +151,26 @@ impl PairRows {
     }
 }
 
+/// The 4D gradient of every hash `h & 31` as a row `[gₓ, gᵧ, g_z, g_w]` ([`grad4`]), for
+/// [`Kernel::sample4`]. 512 bytes.
+#[repr(align(16))]
+struct Grad4Rows([[f32; 4]; 32]);
+
+static GRAD4_ROWS: Grad4Rows = Grad4Rows::new();
+
+impl Grad4Rows {
+    const fn new() -> Self {
+        let mut rows = [[0.0f32; 4]; 32];
+        let mut h = 0;
+        while h < 32 {
+            let g = grad4(h as u32);
+            rows[h] = [g[0] as f32, g[1] as f32, g[2] as f32, g[3] as f32];
+            h += 1;
+        }
+        Grad4Rows(rows)
+    }
+}
+
 /// The SSE2 kernel over a seed's doubled permutation (see
 /// [`Perlin`](crate::lattice::Perlin)), whose hash chain `p[p[x] + y]` needs no `& 255` (every
 /// index it forms is at most 255 + 256).
@@ -175,7 +206,7 @@ impl<G: GradientPairs> Kernel<'_, G> {
     #[inline]
     fn sample2(&self, x: f32, y: f32) -> Option<f32> {
         let (cell, f, s) = split_fade(m128::from_array([x, y, 0.0, 0.0]), 0b11)?;
-        let [cx, cy, _] = cell;
+        let [cx, cy, ..] = cell;
         // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
         // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
         // takes are the vector's halves.
@@ -195,7 +226,7 @@ impl<G: GradientPairs> Kernel<'_, G> {
     #[inline]
     fn sample3(&self, x: f32, y: f32, z: f32) -> Option<f32> {
         let (cell, f, s) = split_fade(m128::from_array([x, y, z, 0.0]), 0b111)?;
-        let [cx, cy, cz] = cell;
+        let [cx, cy, cz, _] = cell;
         // Perlin's chain, x innermost: corner (i, j, k) hashes p[p[p[x + i] + y + j] + z + k].
         let a = self.p(cx) + cy;
         let b = self.p(cx + 1) + cy;
@@ -213,6 +244,56 @@ impl<G: GradientPairs> Kernel<'_, G> {
         let r = lerp(splat::<0b00_00_00_00>(s), x0, x1);
         let q = lerp_halves(r, splat::<0b01_01_01_01>(s));
         Some(finish(q, splat::<0b10_10_10_10>(s)))
+    }
+
+    /// The noise at `(x, y, z, w)`, or `None` outside the vector path's range.
+    #[inline]
+    fn sample4(&self, x: f32, y: f32, z: f32, w: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(m128::from_array([x, y, z, w]), 0b1111)?;
+        let [cx, cy, cz, cw] = cell;
+        // Perlin's chain, x innermost: corner (i, j, k, l) hashes
+        // p[p[p[p[x + i] + y + j] + z + k] + w + l].
+        let (a0, a1) = (self.p(cx) + cy, self.p(cx + 1) + cy);
+        let b = |a: usize| (self.p(a) + cz, self.p(a + 1) + cz);
+        let c = |b: usize| (self.p(b) + cw, self.p(b + 1) + cw);
+        let ((b00, b01), (b10, b11)) = (b(a0), b(a1));
+        let f1 = sub_m128(f, set_splat_m128(1.0));
+        let u = unpack_low_m128(f, f1); // fx, fx − 1, fy, fy − 1
+        let v = unpack_high_m128(f, f1); // fz, fz − 1, fw, fw − 1
+        // Lanes hold the corners (k, l) = (0, 0), (0, 1), (1, 0), (1, 1) of one (i, j).
+        let dz = shuffle_abi_f32_all_m128::<0b01_01_00_00>(v, v);
+        let dw = shuffle_abi_f32_all_m128::<0b11_10_11_10>(v, v);
+        let [dx0, dx1] = [splat::<0b00_00_00_00>(u), splat::<0b01_01_01_01>(u)];
+        let [dy0, dy1] = [splat::<0b10_10_10_10>(u), splat::<0b11_11_11_11>(u)];
+        let dots = |b: usize, dx: m128, dy: m128| {
+            let (c0, c1) = c(b);
+            self.dots4([c0, c0 + 1, c1, c1 + 1], dx, dy, dz, dw)
+        };
+        // The lerps in the shared kernel's order: along x, y, z, then w.
+        let sx = splat::<0b00_00_00_00>(s);
+        let x0 = lerp(sx, dots(b00, dx0, dy0), dots(b10, dx1, dy0));
+        let x1 = lerp(sx, dots(b01, dx0, dy1), dots(b11, dx1, dy1));
+        let r = lerp(splat::<0b01_01_01_01>(s), x0, x1);
+        let q = lerp_halves(r, splat::<0b10_10_10_10>(s));
+        Some(finish(q, splat::<0b11_11_11_11>(s)))
+    }
+
+    /// The dot products of the 4D gradients of `p[i]` for the four hash inputs `i` with the
+    /// offsets, one corner per lane, in the shared kernel's order
+    /// `((d_x·g_x + d_y·g_y) + d_z·g_z) + d_w·g_w` (its zero term changes at most the sign of a
+    /// zero, which [`finish`] canonicalises).
+    #[inline]
+    fn dots4(&self, i: [usize; 4], dx: m128, dy: m128, dz: m128, dw: m128) -> m128 {
+        let [mut gx, mut gy, mut gz, mut gw] =
+            i.map(|i| load_unaligned_m128(&GRAD4_ROWS.0[self.p(i) & 31]));
+        transpose_four_m128(&mut gx, &mut gy, &mut gz, &mut gw);
+        add_m128(
+            add_m128(
+                add_m128(mul_m128(dx, gx), mul_m128(dy, gy)),
+                mul_m128(dz, gz),
+            ),
+            mul_m128(dw, gw),
+        )
     }
 
     /// The dot products of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1` with the
@@ -247,7 +328,7 @@ fn splat<const MASK: i32>(v: m128) -> m128 {
 /// The fraction of `−0.0` stays `−0.0` here (the shared kernel adds `+0.0`); that changes at
 /// most the sign of a zero in the sum, which [`finish`] canonicalises like the shared kernel.
 #[inline]
-fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
+fn split_fade(v: m128, axes: i32) -> Option<([usize; 4], m128, m128)> {
     // floor: truncate, then one down where truncation rounded up (negative non-integers).
     let t = truncate_m128_to_m128i(v);
     let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(t), v);
@@ -266,6 +347,7 @@ fn split_fade(v: m128, axes: i32) -> Option<([usize; 3], m128, m128)> {
         get_i32_from_m128i_s(cell) as usize & 255,
         extract_i16_as_i32_m128i::<2>(cell) as usize & 255,
         extract_i16_as_i32_m128i::<4>(cell) as usize & 255,
+        extract_i16_as_i32_m128i::<6>(cell) as usize & 255,
     ];
     Some((cells, f, s))
 }
@@ -298,7 +380,7 @@ mod tests {
 
     /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
     /// and in the range where noise is usually sampled, with the edge cases of `split`.
-    fn points(n: usize) -> impl Iterator<Item = [f32; 3]> {
+    fn points(n: usize) -> impl Iterator<Item = [f32; 4]> {
         let mut state = 0x853c_49e6_748f_ea9b_u64;
         let edges = [
             0.0,
@@ -327,7 +409,7 @@ mod tests {
         ];
         let edge_points = edges
             .into_iter()
-            .flat_map(move |x| edges.into_iter().map(move |y| [x, y, -y]));
+            .flat_map(move |x| edges.into_iter().map(move |y| [x, y, -y, x]));
         let random = core::iter::repeat_with(move || {
             state = state
                 .wrapping_mul(6_364_136_223_846_793_005)
@@ -341,7 +423,12 @@ mod tests {
                     (v >> 8) as f32 / 65_536.0 - 128.0
                 }
             };
-            [coordinate(0), coordinate(21), coordinate(42)]
+            let w = if bits >> 63 == 0 {
+                coordinate(11)
+            } else {
+                -coordinate(32)
+            };
+            [coordinate(0), coordinate(21), coordinate(42), w]
         });
         edge_points.chain(random.take(n))
     }
@@ -352,8 +439,8 @@ mod tests {
             p: perlin.doubled(),
             pairs,
         };
-        let mut vector_path = [0usize; 2];
-        for [x, y, z] in points(200_000) {
+        let mut vector_path = [0usize; 3];
+        for [x, y, z, w] in points(200_000) {
             let expected2: f32 = sample_lattice(perlin, [x, y]);
             if let Some(v) = kernel.sample2(x, y) {
                 assert_eq!(v.to_bits(), expected2.to_bits(), "2D ({x}, {y})");
@@ -363,6 +450,11 @@ mod tests {
             if let Some(v) = kernel.sample3(x, y, z) {
                 assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
                 vector_path[1] += 1;
+            }
+            let expected4: f32 = sample_lattice(perlin, [x, y, z, w]);
+            if let Some(v) = kernel.sample4(x, y, z, w) {
+                assert_eq!(v.to_bits(), expected4.to_bits(), "4D ({x}, {y}, {z}, {w})");
+                vector_path[2] += 1;
             }
         }
         // Half the random points are in range: the vector path was exercised.

@@ -89,7 +89,7 @@ impl core::fmt::Debug for Perlin {
     }
 }
 
-/// Whether 2D and 3D sampling in `R` take the target's vector kernel: `f32` where
+/// Whether 2D, 3D and 4D sampling in `R` take the target's vector kernel: `f32` where
 /// [`arch`] has one (a constant after monomorphisation).
 #[inline]
 fn has_vector_kernel<R: Real>() -> bool {
@@ -207,7 +207,7 @@ impl core::fmt::Debug for TabledPerlin {
     }
 }
 
-/// `TabledPerlin` is `Perlin` in every method but the point kernels of 2D and 3D (`$point`).
+/// `TabledPerlin` is `Perlin` in every method but the point kernels (`$point`).
 macro_rules! forward_to_perlin {
     ($d:literal $(, $point:ident)?) => {
         impl Lattice<$d> for TabledPerlin {
@@ -266,10 +266,16 @@ fn paired3(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z]: [f32; 3]) -> O
     arch::perlin3_paired(perlin.doubled(), pairs, x, y, z)
 }
 
+/// The 4D point kernel, which has no table (a 4D pair table would be 32 KiB).
+#[inline]
+fn plain4(perlin: &Perlin, _: &arch::PerlinPairs, [x, y, z, w]: [f32; 4]) -> Option<f32> {
+    arch::perlin4(perlin.doubled(), x, y, z, w)
+}
+
 forward_to_perlin!(1);
 forward_to_perlin!(2, paired2);
 forward_to_perlin!(3, paired3);
-forward_to_perlin!(4);
+forward_to_perlin!(4, plain4);
 lattice_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(TabledPerlin, []);
 
@@ -402,6 +408,16 @@ impl Lattice<4> for Perlin {
     fn corner_hashes(&self, cell: [i32; 4]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
+    #[inline]
+    fn sample_point<R: Real>(&self, p: [R; 4]) -> R {
+        sample_point(self, p, |[x, y, z, w]| {
+            arch::perlin4(self.doubled(), x, y, z, w)
+        })
+    }
+    #[inline]
+    fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
+        has_vector_kernel::<R>()
+    }
     /// The signed sum of the three offsets [`grad4`] selects: for a point sample, fewer
     /// instructions than the table's four products (`bench/README.md`).
     #[inline]
@@ -427,7 +443,7 @@ impl Lattice<4> for Perlin {
 
 /// The 4D gradient of hash `h`: one of the 32 edges of the tesseract, its zero axis
 /// `(h >> 3) & 3` and bits 0, 1, 2 the signs of the other three axes in order.
-const fn grad4(h: u32) -> [i8; 4] {
+pub(crate) const fn grad4(h: u32) -> [i8; 4] {
     let zero = (h >> 3 & 3) as usize;
     let mut g = [0i8; 4];
     let mut bit = 0;
