@@ -13,12 +13,11 @@
 //! counts instructions with callgrind). With `-- --test` each workload runs once, unmeasured,
 //! and no table is printed.
 
-use std::hint::black_box;
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use bandnoise_bench::{
-    FUNCTIONS, IMPLEMENTATIONS, LAYOUTS, Layout, N, Run, peer_function, workload,
+    FUNCTIONS, IMPLEMENTATIONS, LAYOUTS, Layout, N, Run, peer_function, quantile, seconds, workload,
 };
 use criterion::{Criterion, Throughput};
 
@@ -125,20 +124,6 @@ const ROUNDS: usize = 101;
 /// Grid rows every workload fills in a round (32·1024 samples).
 const PAIRED_ROWS: usize = 32;
 
-/// The seconds `run` takes to fill [`PAIRED_ROWS`] rows.
-fn seconds(run: &Run, out: &mut [f32]) -> f64 {
-    let start = Instant::now();
-    run(PAIRED_ROWS, out);
-    black_box(&*out);
-    start.elapsed().as_secs_f64()
-}
-
-/// The `q`-quantile of `v` (sorted in place), nearest rank.
-fn quantile(v: &mut [f64], q: f64) -> f64 {
-    v.sort_by(f64::total_cmp);
-    v[((v.len() - 1) as f64 * q).round() as usize]
-}
-
 /// The paired pass (module docs): the median ratio to the fastest peer and its quartiles.
 fn paired_table(layout: Layout) {
     let mut out = vec![0.0f32; N * N];
@@ -163,11 +148,11 @@ fn paired_table(layout: Layout) {
         for round in 0..=ROUNDS {
             let fastest = peers
                 .iter()
-                .map(|run| seconds(run, &mut out))
+                .map(|run| seconds(run, PAIRED_ROWS, &mut out))
                 .fold(f64::INFINITY, f64::min);
             for (ratios, run) in ratios.iter_mut().zip(&ours) {
                 if let Some(run) = run {
-                    let t = seconds(run, &mut out);
+                    let t = seconds(run, PAIRED_ROWS, &mut out);
                     if round > 0 {
                         ratios.push(t / fastest);
                     }

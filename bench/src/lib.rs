@@ -85,6 +85,20 @@ pub const IMPLEMENTATIONS: [&str; 6] = [
 /// A workload: fills `rows` rows of the grid into `out` (`rows · N` values).
 pub type Run = Box<dyn Fn(usize, &mut [f32])>;
 
+/// The seconds `run` takes to fill `rows` rows of `out`.
+pub fn seconds(run: &Run, rows: usize, out: &mut [f32]) -> f64 {
+    let start = std::time::Instant::now();
+    run(rows, out);
+    std::hint::black_box(&*out);
+    start.elapsed().as_secs_f64()
+}
+
+/// The `q`-quantile of `v` (sorted in place), nearest rank.
+pub fn quantile(v: &mut [f64], q: f64) -> f64 {
+    v.sort_by(f64::total_cmp);
+    v[((v.len() - 1) as f64 * q).round() as usize]
+}
+
 impl Layout {
     /// Point evaluation of `f` at every sample of `rows` rows (the same coordinates as
     /// [`Layout::grid`]).
@@ -111,7 +125,8 @@ impl Layout {
         )
     }
 
-    fn batch<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
+    /// [`Noise::fill_grid`] of `noise` over the grid, in `D` dimensions.
+    pub fn batch<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
         Box::new(move |rows, out| {
             noise
                 .fill_grid(&self.grid::<D>(rows), &mut out[..rows * N])
@@ -120,7 +135,7 @@ impl Layout {
     }
 
     /// Point evaluation of `noise` over the grid, in `D` dimensions.
-    fn point<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
+    pub fn point<No: Noise<f32, D> + 'static, const D: usize>(self, noise: No) -> Run {
         Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample(at::<D>(x, y))))
     }
 

@@ -583,6 +583,10 @@ fn consumers_take_their_noises_from_the_description() {
         ("tests/src/lib.rs", "the test helper Lattice"),
         ("gallery/src/main.rs", "the gallery"),
         ("wasm/src/params.rs", "the browser demo"),
+        (
+            "bench/benches/spec.rs",
+            "the benchmark of every described noise",
+        ),
     ];
     for (path, what) in consumers {
         let text = std::fs::read_to_string(format!("{root}/{path}")).expect(path);
