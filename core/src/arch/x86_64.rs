@@ -9,8 +9,8 @@
 //! then a gradient), and every lerp waits for the one before. The gradients of two neighbouring
 //! hash values come from one row of a static table ([`PAIR_ROWS`]), already split by axis, so
 //! the vectors need no transposition. In 4D (32 gradients, a pair table would be 32 KiB) each
-//! corner's gradient is one row of [`GRAD4_ROWS`], and four rows are transposed into the
-//! vectors of their components.
+//! corner's gradient is one row of the portable kernel's `f32` gradient table (`Grad4`), and
+//! four rows are transposed into the vectors of their components.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
@@ -29,7 +29,7 @@ use safe_arch::{
     unpack_high_m128, unpack_low_m128, zeroed_m128,
 };
 
-use crate::lattice::perlin::{GRAD3, grad4};
+use crate::lattice::perlin::{GRAD3, Grad4};
 
 pub(crate) const PERLIN_POINT: bool = true;
 
@@ -151,26 +151,6 @@ impl PairRows {
     }
 }
 
-/// The 4D gradient of every hash `h & 31` as a row `[gₓ, gᵧ, g_z, g_w]` ([`grad4`]), for
-/// [`Kernel::sample4`]. 512 bytes.
-#[repr(align(16))]
-struct Grad4Rows([[f32; 4]; 32]);
-
-static GRAD4_ROWS: Grad4Rows = Grad4Rows::new();
-
-impl Grad4Rows {
-    const fn new() -> Self {
-        let mut rows = [[0.0f32; 4]; 32];
-        let mut h = 0;
-        while h < 32 {
-            let g = grad4(h as u32);
-            rows[h] = [g[0] as f32, g[1] as f32, g[2] as f32, g[3] as f32];
-            h += 1;
-        }
-        Grad4Rows(rows)
-    }
-}
-
 /// The SSE2 kernel over a seed's doubled permutation (see
 /// [`Perlin`](crate::lattice::Perlin)), whose hash chain `p[p[x] + y]` needs no `& 255` (every
 /// index it forms is at most 255 + 256).
@@ -284,8 +264,10 @@ impl<G: GradientPairs> Kernel<'_, G> {
     /// zero, which [`finish`] canonicalises).
     #[inline]
     fn dots4(&self, i: [usize; 4], dx: m128, dy: m128, dz: m128, dw: m128) -> m128 {
+        // A reference, so the table is a promoted static, not built on the stack.
+        let table: &[[f32; 4]; 32] = &Grad4::<f32>::TABLE;
         let [mut gx, mut gy, mut gz, mut gw] =
-            i.map(|i| load_unaligned_m128(&GRAD4_ROWS.0[self.p(i) & 31]));
+            i.map(|i| load_unaligned_m128(&table[self.p(i) & 31]));
         transpose_four_m128(&mut gx, &mut gy, &mut gz, &mut gw);
         add_m128(
             add_m128(

@@ -443,7 +443,7 @@ impl Lattice<4> for Perlin {
 
 /// The 4D gradient of hash `h`: one of the 32 edges of the tesseract, its zero axis
 /// `(h >> 3) & 3` and bits 0, 1, 2 the signs of the other three axes in order.
-pub(crate) const fn grad4(h: u32) -> [i8; 4] {
+const fn grad4(h: u32) -> [i8; 4] {
     let zero = (h >> 3 & 3) as usize;
     let mut g = [0i8; 4];
     let mut bit = 0;
@@ -460,10 +460,10 @@ pub(crate) const fn grad4(h: u32) -> [i8; 4] {
 
 /// [`grad4`] of every hash in the number type `R`, built at compile time, for the same reason
 /// as [`Grad3`]: a dot product is then four `mul_unit`s of loaded components, branch-free.
-struct Grad4<R>(core::marker::PhantomData<R>);
+pub(crate) struct Grad4<R>(core::marker::PhantomData<R>);
 
 impl<R: Real> Grad4<R> {
-    const TABLE: [[R; 4]; 32] = {
+    pub(crate) const TABLE: [[R; 4]; 32] = {
         let mut table = [[R::ZERO; 4]; 32];
         let mut h = 0;
         while h < 32 {
