@@ -3,9 +3,11 @@
 
 use bandnoise::Error;
 use bandnoise::fractal::{Kind, Octaves};
-use bandnoise::spec::{Base, Spec};
+use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution};
 use wasm_bindgen::prelude::*;
+
+use crate::render::WebTiles;
 
 /// The names of the noises the demo can show, in the description's order: every
 /// [`Base`] with a 3D form (the page's third axis is time).
@@ -29,8 +31,8 @@ fn kind(name: &str) -> Result<Base, String> {
 #[wasm_bindgen]
 #[derive(Clone, Debug)]
 pub struct Params {
-    /// The noise, its seed, period, bands and fractal sum.
-    pub(crate) spec: Spec,
+    /// The noise, its seed, period, bands and fractal sum, built once over the demo's tiles.
+    pub(crate) noise: SpecNoise<3, WebTiles>,
     pub(crate) fixed: bool,
     pub(crate) zoom: f32,
     pub(crate) pan: [f32; 2],
@@ -87,7 +89,8 @@ fn describe(e: Error) -> String {
         Error::NotPeriodic(noise) => {
             format!("{noise} noise is not a lattice noise and cannot be wrapped to a period")
         }
-        // The page asks the core only for what is refused above.
+        // The page asks the core only for what is refused above (its kinds have a 3D form and
+        // its period has 3 axes, so building the spec in 3D is not refused).
         _ => "invalid settings".into(),
     }
 }
@@ -216,7 +219,7 @@ impl Params {
             _ => return Err(format!("palette must be grey or marble, not \"{palette}\"")),
         };
         Ok(Params {
-            spec,
+            noise: spec.build_with::<3, WebTiles>().map_err(describe)?,
             fixed,
             zoom,
             pan,

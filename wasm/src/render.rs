@@ -24,7 +24,7 @@ static WEB_TILE3: QuantizedTile3<16> =
 /// The wavelet tiles the demo's specs are built over: the crate's quantized 2D tile and the
 /// small 3D one.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct WebTiles;
+pub(crate) struct WebTiles;
 
 impl Tiles for WebTiles {
     type Two = QuantizedTile2<64>;
@@ -101,7 +101,7 @@ impl<R: Real> Noise<R, 3> for Projected {
 }
 
 fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
-    let s = &p.spec;
+    let s = p.noise.spec();
     // Projection is a way of sampling, not a noise of its own: the spec names the noise.
     let projected = match s.base() {
         Base::Wavelet if p.projected => {
@@ -111,11 +111,7 @@ fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
             Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution())
                 .with_tiling(s.tiling()),
         ),
-        // Never refused: the page's kinds have a 3D form and its period has 3 axes.
-        _ => match s.build_with::<3, WebTiles>() {
-            Ok(noise) => return fill::<R, _>(&noise, p, size, values),
-            Err(_) => return values.fill(0.0),
-        },
+        _ => return fill::<R, _>(&p.noise, p, size, values),
     };
     match s.fractal() {
         None => fill::<R, _>(&projected, p, size, values),
