@@ -61,11 +61,11 @@ fn main() {
                 let Some(spec) = spec_workload(base, dims, batch, l) else {
                     continue;
                 };
-                let typed = workload(&typed_name, implementation, l);
                 if test {
                     spec(1, &mut out);
                     continue;
                 }
+                let typed = workload(&typed_name, implementation, l);
                 let (mut ns, mut ratios) = (Vec::new(), Vec::new());
                 // One round unmeasured, to warm caches and branch predictors.
                 for round in 0..=ROUNDS {
