@@ -71,6 +71,7 @@
 
 mod arch;
 pub mod batch;
+mod decimal;
 mod error;
 pub mod fractal;
 pub mod hash;

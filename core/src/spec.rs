@@ -35,8 +35,10 @@
 //! Printing ([`Display`](core::fmt::Display)) writes the base, the seed, and every setting of
 //! each layer present, so a printed spec keeps its meaning if a default changes; parsing the
 //! printed text gives the same spec back (floats print in the shortest form that reads back
-//! exactly). Bad text is a [`ParseError`] naming the byte position and what was expected, never
-//! a panic.
+//! exactly). Numbers are plain decimals (`-0.5`, `2`, `.25`; no exponent, `inf` or `nan`) of at
+//! most 100 digits, read to the nearest `f32` (ties to even, as `f32::from_str`). Bad text is a
+//! [`ParseError`] naming the byte position and what was expected, never a panic (the firmware's
+//! `nopanic-spec` proves it).
 //!
 //! # Examples
 //!
@@ -74,6 +76,7 @@ use core::fmt;
 use core::str::FromStr;
 
 use crate::batch::{Grid, LANES};
+use crate::decimal;
 use crate::fractal::{Fractal, Kind, Octaves};
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use crate::wavelet::{
@@ -549,7 +552,7 @@ impl FromStr for Spec {
         let (mut first, mut weights) = (None, None);
         let defaults = Octaves::default();
         for (at, word) in words {
-            let (key, value, value_at) = match word.split_once('=') {
+            let (key, value, value_at) = match split_at_byte(word, b'=') {
                 Some((k, v)) => (k, Some(v), at + k.len() + 1),
                 None => (word, None, at + word.len()),
             };
@@ -589,7 +592,7 @@ impl FromStr for Spec {
                     let mut period = [0u32; 4];
                     let mut axes = 0;
                     let mut part_at = value_at;
-                    for part in v.split(',') {
+                    for part in Parts(Some(v)) {
                         let slot = period.get_mut(axes).ok_or(err(part_at, E))?;
                         *slot = part.parse().map_err(|_| err(part_at, E))?;
                         axes += 1;
@@ -628,9 +631,9 @@ impl FromStr for Spec {
                     let mut n = 0;
                     let mut part_at = value_at;
                     // An empty list is no bands (the noise is 0).
-                    for part in v.split(',').filter(|_| !v.is_empty()) {
+                    for part in Parts(Some(v)).filter(|_| !v.is_empty()) {
                         let slot = w.get_mut(n).ok_or(err(part_at, E))?;
-                        *slot = parse_f32(part).ok_or(err(part_at, E))?;
+                        *slot = decimal::parse_f32(part).ok_or(err(part_at, E))?;
                         n += 1;
                         part_at += part.len() + 1;
                     }
@@ -672,12 +675,12 @@ impl FromStr for Spec {
                 "lacunarity" => {
                     const E: &str = "a lacunarity in (0, 16]";
                     let v = needs_value(E)?;
-                    lacunarity = Some((value_at, parse_f32(v).ok_or(err(value_at, E))?));
+                    lacunarity = Some((value_at, decimal::parse_f32(v).ok_or(err(value_at, E))?));
                 }
                 _ => {
                     const E: &str = "a gain in [-1, 1]";
                     let v = needs_value(E)?;
-                    gain = Some((value_at, parse_f32(v).ok_or(err(value_at, E))?));
+                    gain = Some((value_at, decimal::parse_f32(v).ok_or(err(value_at, E))?));
                 }
             }
         }
@@ -742,17 +745,6 @@ impl FromStr for Spec {
     }
 }
 
-/// A float of the text form: decimal notation only (no `inf`, `nan` or exponents, which
-/// `f32::from_str` would take).
-fn parse_f32(s: &str) -> Option<f32> {
-    let digits = s.strip_prefix('-').unwrap_or(s);
-    let ok = !digits.is_empty()
-        && digits.bytes().all(|b| b.is_ascii_digit() || b == b'.')
-        && digits.bytes().filter(|&b| b == b'.').count() <= 1
-        && digits.bytes().any(|b| b.is_ascii_digit());
-    if ok { s.parse().ok() } else { None }
-}
-
 /// Which settings a text has given.
 #[derive(Default)]
 struct Seen {
@@ -768,6 +760,32 @@ struct Seen {
     gain: bool,
 }
 
+/// The text before and after the first `byte` in `s`. The separators of the text form are
+/// ASCII, so the split falls on a character boundary; searching bytes rather than `char`s
+/// keeps the parser free of panic paths (`core`'s char searcher has a slice index the
+/// optimiser cannot prove, which the firmware's no-panic proof would fail on).
+fn split_at_byte(s: &str, byte: u8) -> Option<(&str, &str)> {
+    let i = s.bytes().position(|b| b == byte)?;
+    Some((s.get(..i)?, s.get(i + 1..)?))
+}
+
+/// The comma-separated parts of a list (one empty part for an empty list, as `split`).
+struct Parts<'a>(Option<&'a str>);
+
+impl<'a> Iterator for Parts<'a> {
+    type Item = &'a str;
+    fn next(&mut self) -> Option<&'a str> {
+        let rest = self.0.take()?;
+        match split_at_byte(rest, b',') {
+            Some((part, tail)) => {
+                self.0 = Some(tail);
+                Some(part)
+            }
+            None => Some(rest),
+        }
+    }
+}
+
 /// The words of a text (split at ASCII spaces), with their byte offsets.
 struct Words<'a> {
     text: &'a str,
@@ -778,9 +796,10 @@ impl<'a> Iterator for Words<'a> {
     type Item = (usize, &'a str);
     fn next(&mut self) -> Option<(usize, &'a str)> {
         let rest = self.text.get(self.at..)?;
-        let trimmed = rest.trim_start_matches(' ');
-        let start = self.at + (rest.len() - trimmed.len());
-        let len = trimmed.find(' ').unwrap_or(trimmed.len());
+        let skip = rest.bytes().take_while(|&b| b == b' ').count();
+        let trimmed = rest.get(skip..)?;
+        let start = self.at + skip;
+        let len = trimmed.bytes().take_while(|&b| b != b' ').count();
         self.at = start + len;
         if len == 0 {
             return None;
