@@ -40,6 +40,14 @@ pub(crate) mod sealed {
         /// multiply, where `mul_rn` needs 64 bits and a rounding). Other units are never passed
         /// (the callers' tables hold only these three).
         fn mul_unit(self, unit: Self) -> Self;
+        /// `self.mul_rn(o)` without the saturation: the same bits wherever the rounded product
+        /// fits the type, which the kernels guarantee by a factor in `[0, 1]` (a fraction, a
+        /// fade, an interpolation or B-spline weight: the product cannot exceed the other
+        /// factor) or by small factors (fixed point's quintic fade reaches `1 + 2⁻¹⁶`). Cheaper
+        /// in fixed point: no saturation, and on ARMv6-M (no 32 × 32 → 64-bit multiply, so
+        /// `mul_rn` calls `__aeabi_lmul`) both factors split into 16-bit halves, three 32-bit
+        /// multiplies. Floats: `self * o`. Out of range it wraps (never a panic).
+        fn mul_fraction(self, o: Self) -> Self;
         /// `self`, or 0 when it is NaN or ±∞ (fixed point: always `self`).
         fn finite_or_zero(self) -> Self;
         /// A setting given as `f32` and rounded once to I16F16 when it was validated: floats
@@ -75,6 +83,10 @@ pub(crate) mod sealed {
                     }
                 }
                 #[inline]
+                fn mul_fraction(self, o: Self) -> Self {
+                    self * o
+                }
+                #[inline]
                 fn finite_or_zero(self) -> Self {
                     // ∞ − ∞ and NaN − NaN are NaN, which compares unequal to 0.
                     if self - self == 0.0 { self } else { 0.0 }
@@ -97,6 +109,16 @@ pub(crate) mod sealed {
             I16F16::from_bits(self.to_bits().wrapping_mul(unit.to_bits() >> 16))
         }
         #[inline]
+        fn mul_fraction(self, o: Self) -> Self {
+            let (a, b) = (self.to_bits(), o.to_bits());
+            #[cfg(bandnoise_armv6m)]
+            let bits = super::mul_fraction_halves(a, b);
+            // Where the rounded product fits `i32` (the caller's promise), no clamp is needed.
+            #[cfg(not(bandnoise_armv6m))]
+            let bits = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
+            I16F16::from_bits(bits)
+        }
+        #[inline]
         fn finite_or_zero(self) -> Self {
             self
         }
@@ -105,6 +127,22 @@ pub(crate) mod sealed {
             q
         }
     }
+}
+
+/// The bits of I16F16 `a · b` rounded to nearest (ties up), wherever the result fits `i32`, in
+/// 32-bit multiplies only (ARMv6-M's `muls`): with `a = ah·2^16 + al` and `b = bh·2^16 + bl`
+/// (`ah = a >> 16` arithmetic, `al`, `bl` in `[0, 2^16)`), `a·b = (a·bh + ah·bl)·2^16 +
+/// al·bl`; the rounding sees only `al·bl`, and `al·bl + 2^15 < 2^32`. The rest is exact
+/// modulo 2³², so wrapping arithmetic gives the product whenever it fits.
+#[cfg(any(test, bandnoise_armv6m))]
+#[inline]
+fn mul_fraction_halves(a: i32, b: i32) -> i32 {
+    let (ah, al) = (a >> 16, a as u32 & 0xFFFF);
+    let (bh, bl) = (b >> 16, b as u32 & 0xFFFF);
+    let low = al.wrapping_mul(bl).wrapping_add(1 << 15) >> 16;
+    (a.wrapping_mul(bh))
+        .wrapping_add(ah.wrapping_mul(bl as i32))
+        .wrapping_add(low as i32)
 }
 
 /// The arithmetic the noises need, for `f32`, `f64` and [`I16F16`].
@@ -560,6 +598,41 @@ impl Real for I16F16 {
 mod tests {
     use super::sealed::Sealed;
     use super::*;
+
+    /// `mul_fraction` (the form this target selects, and ARMv6-M's 16-bit halves) gives
+    /// `mul_rn`'s bits wherever the product fits: every `self` in `[0, 2]` with `|o| < 2¹⁴`,
+    /// every `self` in `[0, 1]` with any `o`, and any pair of factors below 2⁷.
+    #[test]
+    fn mul_fraction_is_mul_rn() {
+        let mut x = 0x2545_f491_4f6c_dd1du64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as u32
+        };
+        let check = |a: i32, b: i32| {
+            let (fa, fb) = (I16F16::from_bits(a), I16F16::from_bits(b));
+            let want = fa.mul_rn(fb).to_bits();
+            assert_eq!(fa.mul_fraction(fb).to_bits(), want, "{a:#x} · {b:#x}");
+            assert_eq!(mul_fraction_halves(a, b), want, "{a:#x} · {b:#x}");
+        };
+        let limit = (1 << 30) - 1;
+        for a in [
+            0, 1, 2, 0x7FFF, 0x8000, 0xFFFF, 0x1_0000, 0x1_0001, 0x1_FFFF, 0x2_0000,
+        ] {
+            for b in [0, 1, -1, 0xFFFF, 0x1_0000, -0x1_0000, 0x8000, limit, -limit] {
+                check(a, b);
+                check(-a, b);
+            }
+        }
+        for _ in 0..1_000_000 {
+            check(
+                (next() & 0x3_FFFF).min(0x2_0000) as i32,
+                (next() as i32) >> 1,
+            );
+        }
+    }
 
     /// `mul_unit` by −1, 0 and 1 equals `mul_rn` (as numbers) over the range the kernels pass.
     fn mul_unit_is_mul_rn<R: Real>(values: impl Iterator<Item = R>) {

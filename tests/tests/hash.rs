@@ -100,12 +100,15 @@ fn bbs_small_modulus_and_reduction() {
 
 #[test]
 fn the_reciprocal_reduction_is_exact_for_every_argument() {
-    // The moduli the kernels use, both edges of the reciprocal's range (1024 uses it, 1031
-    // falls back to %), powers of two (the tightest case) and small ones.
+    // The moduli the kernels use, both edges of the direct reciprocal's range (131, 137) and
+    // of the corrected one's (1024 uses it, 1031 falls back to %), powers of two (the
+    // tightest case) and small ones.
     assert!(Bbs::<61>::step_is_exact());
     assert!(Bbs::<2>::step_is_exact());
     assert!(Bbs::<3>::step_is_exact());
     assert!(Bbs::<64>::step_is_exact());
+    assert!(Bbs::<131>::step_is_exact()); // the largest with an exact direct reciprocal
+    assert!(Bbs::<137>::step_is_exact()); // the smallest prime without one
     assert!(Bbs::<257>::step_is_exact());
     assert!(Bbs::<1021>::step_is_exact());
     assert!(Bbs::<1024>::step_is_exact());

@@ -85,16 +85,50 @@ impl<const M: u32> Bbs<M> {
         0
     };
 
+    /// A shift `s` and reciprocal `m = ⌈2^s/M⌉` with which `(v·m) >> s` is exactly `⌊v/M⌋` for
+    /// every `v ≤ (2M)²` in 32-bit arithmetic, or `m = 0` where no shift gives both. With the
+    /// reciprocal's excess `e = m·M − 2^s < M`, `v·m / 2^s = ⌊v/M⌋ + (v mod M + v·e/2^s)/M`, so
+    /// the quotient is exact when `v·e < 2^s`; and `v·m < 2^32` keeps it in 32 bits. The search
+    /// takes the largest such shift (for `M = 61`: `s = 24`). Every `M` up to 131 has one (and
+    /// powers of two); then a hash step squares its unreduced argument and divides once, by a
+    /// multiply.
+    const DIRECT: (u32, u32) = {
+        let v = 4 * (M as u64) * (M as u64);
+        let mut s = 32;
+        let mut found = (0, 0);
+        while s > 0 {
+            s -= 1;
+            let m = (1u64 << s).div_ceil(M as u64);
+            let e = m * M as u64 - (1 << s);
+            if v * m < 1 << 32 && v * e < 1 << s {
+                found = (s, m as u32);
+                break;
+            }
+        }
+        found
+    };
+
+    /// `v mod M` for `v ≤ (2M)²` by [`Self::DIRECT`]'s reciprocal; call only where it exists.
+    #[inline]
+    #[must_use]
+    const fn mod_direct(v: u32) -> u32 {
+        let (shift, magic) = Self::DIRECT;
+        v - ((v * magic) >> shift) * M
+    }
+
     /// `v mod M` for `v ≤ M²` (a square of a reduced value).
     ///
-    /// For `M ≤ 1024` (61 included): `q = (v · ⌈2^s/M⌉) >> s` is `⌊v/M⌋` or one more, because
-    /// the reciprocal's error times `v < M² ≤ 2^s` stays below 1; one correction makes it exact.
-    /// A 32-bit multiply replaces a division: chips without a divider (Cortex-M0) save most.
-    /// Exhaustively tested against `%` (`tests/tests/hash.rs`).
+    /// By [`Self::DIRECT`]'s exact reciprocal where there is one; otherwise, for `M ≤ 1024`,
+    /// `q = (v · ⌈2^s/M⌉) >> s` is `⌊v/M⌋` or one more, because the reciprocal's error times
+    /// `v < M² ≤ 2^s` stays below 1, and one correction makes it exact. A 32-bit multiply
+    /// replaces a division: chips without a divider (Cortex-M0) save most. Exhaustively tested
+    /// against `%` (`tests/tests/hash.rs`).
     #[inline]
     #[must_use]
     const fn mod_square(v: u32) -> u32 {
-        if Self::RECIPROCAL {
+        if Self::DIRECT.1 != 0 {
+            Self::mod_direct(v)
+        } else if Self::RECIPROCAL {
             let q = (v * Self::MAGIC) >> Self::SHIFT;
             let r = v.wrapping_sub(q * M);
             if r > v { r.wrapping_add(M) } else { r }
@@ -105,12 +139,16 @@ impl<const M: u32> Bbs<M> {
 
     /// One step of the hash for an argument in `0..=2M`: `(x mod M)² mod M`.
     /// The chains only ever add a reduced cell (at most `M` for the upper corner) to a previous
-    /// hash (below `M`), so one conditional subtraction replaces the first division.
+    /// hash (below `M`). `x² ≡ (x mod M)²`, so with [`Self::DIRECT`] the square of `x` itself
+    /// is reduced once; otherwise one conditional subtraction reduces `x` first.
     #[inline]
     #[must_use]
     pub(crate) const fn step(x: u32) -> u32 {
         let () = Self::VALID;
         debug_assert!(x <= 2 * M);
+        if Self::DIRECT.1 != 0 {
+            return Self::mod_direct(x * x);
+        }
         // r may equal M when x = 2M; M² mod M = 0 = (2M mod M)², so the result is still exact.
         let r = if x >= M { x - M } else { x };
         Self::mod_square(r * r)

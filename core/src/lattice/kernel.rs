@@ -22,13 +22,19 @@ pub(crate) fn split_point<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; 
     (cell, frac)
 }
 
-/// Perlin's `lerp(t, a, b) = a + t·(b − a)` (this form, not `(1−t)a + tb`, for his exact values).
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)` (this form, not `(1−t)a + tb`, for his exact values),
+/// for a weight `t` in `[0, 2]` (a faded fraction; see [`Fade`]) and corner values below 2¹³.
 #[inline]
 pub(crate) fn lerp<R: Real>(t: R, a: R, b: R) -> R {
-    a + t.mul_rn(b - a)
+    a + t.mul_fraction(b - a)
 }
 
-/// A fade curve applied to each fraction before interpolating.
+/// A fade curve applied to each fraction before interpolating. Every product has a factor in
+/// `[0, 1]` (`mul_fraction`, the cheap fixed-point multiply), and the curve stays in `[0, 1]`
+/// up to rounding: I16F16 reaches `1 + 2⁻¹⁶` (the quintic at a few fractions, tested over all
+/// of them), f32 `1 + 9·2⁻²³` (the quintic near 0.998; an exhaustive search over every f32
+/// fraction, too slow for the tests, found no more), well inside the `[0, 2]` that lets it
+/// weight [`lerp`].
 pub(crate) trait Fade {
     /// The curve at `t` in `[0, 1)`.
     fn fade<R: Real>(t: R) -> R;
@@ -43,14 +49,17 @@ impl Fade for Quintic {
     #[inline]
     fn fade<R: Real>(t: R) -> R {
         // Perlin's operation order: t·t·t·(t·(t·6 − 15) + 10).
-        let t3 = t.mul_rn(t).mul_rn(t);
-        t3.mul_rn(t.mul_rn(t.mul_rn(R::from_i32(6)) - R::from_i32(15)) + R::from_i32(10))
+        let t3 = t.mul_fraction(t).mul_fraction(t);
+        t3.mul_fraction(
+            t.mul_fraction(t.mul_fraction(R::from_i32(6)) - R::from_i32(15)) + R::from_i32(10),
+        )
     }
     #[inline]
     fn fade_derivative<R: Real>(t: R) -> R {
-        // 30 t² (t − 1)²
-        let u = t.mul_rn(t - R::ONE);
-        u.mul_rn(u).mul_rn(R::from_i32(30))
+        // 30 t² (t − 1)², with u = t(1 − t) in [0, 1/4] (−u is exact, and (−u)² = u² exactly
+        // in every type, so the bits are those of squaring t(t − 1)).
+        let u = -t.mul_fraction(t - R::ONE);
+        u.mul_fraction(u).mul_fraction(R::from_i32(30))
     }
 }
 
@@ -60,12 +69,12 @@ pub(crate) struct Cubic;
 impl Fade for Cubic {
     #[inline]
     fn fade<R: Real>(t: R) -> R {
-        t.mul_rn(t).mul_rn(R::from_i32(3) - t - t)
+        t.mul_fraction(t).mul_fraction(R::from_i32(3) - t - t)
     }
     #[inline]
     fn fade_derivative<R: Real>(t: R) -> R {
         // 6 t (1 − t)
-        t.mul_rn(R::ONE - t).mul_rn(R::from_i32(6))
+        t.mul_fraction(R::ONE - t).mul_fraction(R::from_i32(6))
     }
 }
 
@@ -157,4 +166,35 @@ pub(crate) fn interpolate_with_gradient<R: Real, const D: usize>(
         *g = (interpolate_derivative(dots, s, a, ds[a]) + interpolate(component, s)).canonical();
     }
     (value.canonical(), gradient)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::I16F16;
+
+    /// The fades stay in `[0, 1]` up to rounding (so they can weight `lerp` through
+    /// `mul_fraction`): in `[0, 1 + 2⁻¹⁶]` for every I16F16 fraction (the quintic reaches the
+    /// upper end, at 0xfdd0 for one), in `[0, 1 + 9·2⁻²³]` (the exhaustive maximum, see
+    /// [`Fade`]) for the f32 fractions nearest 0 and 1 and a spread between.
+    #[test]
+    fn fades_stay_in_the_unit_interval() {
+        fn check<F: Fade>() {
+            let top = I16F16::ONE + I16F16::DELTA;
+            for bits in 0..0x1_0000 {
+                let s = F::fade(I16F16::from_bits(bits));
+                assert!((I16F16::ZERO..=top).contains(&s), "{bits:#x}: {s}");
+            }
+            let below_one = (0..1 << 20).map(|i| f32::from_bits(1.0f32.to_bits() - 1 - i));
+            let spread = (0..1 << 20).map(|i| i as f32 / (1 << 20) as f32 + 1e-7);
+            let near_zero = (0..1 << 16).map(f32::from_bits);
+            for t in below_one.chain(spread).chain(near_zero) {
+                let s = F::fade(t);
+                let top = f32::from_bits(1.0f32.to_bits() + 9);
+                assert!((0.0..=top).contains(&s), "{t}: {s}");
+            }
+        }
+        check::<Quintic>();
+        check::<Cubic>();
+    }
 }

@@ -184,8 +184,9 @@ fn bspline3_fraction<R: Real>(x: R) -> (i32, R) {
 fn bspline3_weights<R: Real>(f: R) -> [R; 3] {
     let half = R::from_ratio(1, 1);
     let g = R::ONE - f;
-    let w0 = g.mul_rn(g).mul_rn(half);
-    let w2 = f.mul_rn(f).mul_rn(half);
+    // Every factor is in [0, 1]: `mul_fraction` (see `Real`) is exact without saturating.
+    let w0 = g.mul_fraction(g).mul_fraction(half);
+    let w2 = f.mul_fraction(f).mul_fraction(half);
     [w0, R::ONE - w0 - w2, w2]
 }
 
@@ -512,13 +513,14 @@ impl<T> Wavelet<'_, T> {
                     for jx in 0..3 {
                         if mine(0, jx) {
                             let c = self.tile.flat(base + offset[0][jx][l]);
-                            row = row.saturating_add(weights[0][jx][l].mul_rn(c));
+                            // Weights lie in [0, 1], so no product exceeds its other factor.
+                            row = row.saturating_add(weights[0][jx][l].mul_fraction(c));
                         }
                     }
-                    plane = plane.saturating_add(weights[1][jy][l].mul_rn(row));
+                    plane = plane.saturating_add(weights[1][jy][l].mul_fraction(row));
                 }
                 *s = s.saturating_add(if D == 3 {
-                    weights[D - 1][jz][l].mul_rn(plane)
+                    weights[D - 1][jz][l].mul_fraction(plane)
                 } else {
                     plane
                 });
