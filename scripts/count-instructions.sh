@@ -39,7 +39,18 @@ rows = dict(line.rstrip("\n").split("\t") for line in open(sys.argv[1]))
 fixed, flt = float(rows["mnoise 2D I16F16"]), float(rows["mnoise 2D f32"])
 ratio = fixed / flt
 print(f"Cortex-M0: fixed-point 2D mNoise takes {ratio:.2f} of the instructions of soft-float f32 (goal: at most 0.20)")
-sys.exit(0 if ratio <= 0.20 else "goal missed")
+failed = ratio > 0.20
+# Issue 16's goals on the Cortex-M0 (FastLED 3.10.3 inoise16 at gcc -O2: 2D 217, 3D 462;
+# Gustavson's armnoise8 258). Goals met are asserted so that they stay met; goals still
+# open are reported.
+goals = [("perlin 2D I16F16", 217, True), ("perlin 3D I16F16", 462, True),
+         ("mnoise 2D I16F16", 260, False), ("wavelet 2D I16F16", 700, False)]
+for name, goal, asserted in goals:
+    got = float(rows[name])
+    verdict = "met" if got <= goal else ("MISSED" if asserted else "not yet met (open)")
+    print(f"Cortex-M0: {name} {got:.0f} instructions per sample, goal at most {goal}: {verdict}")
+    failed |= asserted and got > goal
+sys.exit("goal missed" if failed else 0)
 PY
 
 # Footprint: flash and RAM from the ELF section headers.
