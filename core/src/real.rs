@@ -48,6 +48,10 @@ pub(crate) mod sealed {
         /// `mul_rn` calls `__aeabi_lmul`) both factors split into 16-bit halves, three 32-bit
         /// multiplies. Floats: `self * o`. Out of range it wraps (never a panic).
         fn mul_fraction(self, o: Self) -> Self;
+        /// `-self` if `bit` (the low bit of its argument) is 1, else `self`: a gradient sign from
+        /// a hash bit. On ARMv6-M fixed point flips without a branch (`(x ^ m) − m` with
+        /// `m = −bit`); elsewhere, and for floats, it is `-`.
+        fn negate_if(self, bit: u32) -> Self;
         /// `self`, or 0 when it is NaN or ±∞ (fixed point: always `self`).
         fn finite_or_zero(self) -> Self;
         /// A setting given as `f32` and rounded once to I16F16 when it was validated: floats
@@ -87,6 +91,10 @@ pub(crate) mod sealed {
                     self * o
                 }
                 #[inline]
+                fn negate_if(self, bit: u32) -> Self {
+                    if bit & 1 == 0 { self } else { -self }
+                }
+                #[inline]
                 fn finite_or_zero(self) -> Self {
                     // ∞ − ∞ and NaN − NaN are NaN, which compares unequal to 0.
                     if self - self == 0.0 { self } else { 0.0 }
@@ -117,6 +125,19 @@ pub(crate) mod sealed {
             #[cfg(not(bandnoise_armv6m))]
             let bits = ((a as i64 * b as i64 + (1 << 15)) >> 16) as i32;
             I16F16::from_bits(bits)
+        }
+        #[inline]
+        fn negate_if(self, bit: u32) -> Self {
+            // Kernels pass sums of a few fractions: −x never wraps. Branch-free on ARMv6-M
+            // only: elsewhere (RV32IMC, counted) the branch is cheaper.
+            if cfg!(bandnoise_armv6m) {
+                let m = (bit & 1).wrapping_neg() as i32;
+                I16F16::from_bits((self.to_bits() ^ m).wrapping_sub(m))
+            } else if bit & 1 == 0 {
+                self
+            } else {
+                -self
+            }
         }
         #[inline]
         fn finite_or_zero(self) -> Self {

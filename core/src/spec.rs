@@ -38,7 +38,7 @@
 //! exactly). Numbers are plain decimals (`-0.5`, `2`, `.25`; no exponent, `inf` or `nan`) of at
 //! most 100 digits, read to the nearest `f32` (ties to even, as `f32::from_str`). Bad text is a
 //! [`ParseError`] naming the byte position and what was expected, never a panic (the firmware's
-//! `nopanic-spec` proves it).
+//! `nopanic` proves it).
 //!
 //! # Examples
 //!

@@ -737,5 +737,5 @@ pub(crate) fn half_dims(dims: usize) -> f32 {
 /// Adds `±x` as bit `bit` of `h` says (set: subtract).
 #[inline]
 pub(crate) fn signed<R: Real>(h: u32, bit: u32, x: R) -> R {
-    if h >> bit & 1 == 0 { x } else { -x }
+    x.negate_if(h >> bit)
 }
