@@ -59,7 +59,8 @@ echo
 echo "footprint on thumbv6m (bytes)"
 python3 ../scripts/elf-size.py target/thumbv6m-none-eabi/release/{empty,minimal,led} | tee "$work/size.txt"
 added=$(awk '/^minimal adds/ { print $3 }' "$work/size.txt")
-if [ "$added" -gt 4096 ]; then
-    echo "the minimal firmware adds $added bytes of flash (goal: at most 4096)"
+# Issue 16: at most 1.5 KB for fixed-point 2D mNoise (FastLED's 2D inoise16: about 800 bytes).
+if [ "$added" -gt 1536 ]; then
+    echo "the minimal firmware adds $added bytes of flash (goal: at most 1536)"
     exit 1
 fi

@@ -151,7 +151,7 @@ fn round_quotient(mut a: Big, mut b: Big) -> Option<u32> {
     // negative count) from 2^-150 down, where only the rounding below decides.
     let precision = if e >= -126 { 24 } else { e + 150 };
     if precision < 0 {
-        return Some(0); // below 2^-151: nearer 0 than the smallest subnormal (2^-149)
+        return Some(0); // below 2^-150, half the smallest subnormal (2^-149): rounds to 0
     }
     // Long division: `q` takes the quotient's bits; the remainder stays below `b`, then
     // doubles for the next bit, so that at the end `a` compares with `b` as the discarded

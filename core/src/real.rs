@@ -652,6 +652,8 @@ mod tests {
                 (next() & 0x3_FFFF).min(0x2_0000) as i32,
                 (next() as i32) >> 1,
             );
+            check((next() & 0x1_FFFF).min(0x1_0000) as i32, next() as i32);
+            check((next() as i32) >> 9, (next() as i32) >> 9);
         }
     }
 

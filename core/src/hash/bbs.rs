@@ -118,17 +118,14 @@ impl<const M: u32> Bbs<M> {
 
     /// `v mod M` for `v ≤ M²` (a square of a reduced value).
     ///
-    /// By [`Self::DIRECT`]'s exact reciprocal where there is one; otherwise, for `M ≤ 1024`,
-    /// `q = (v · ⌈2^s/M⌉) >> s` is `⌊v/M⌋` or one more, because the reciprocal's error times
-    /// `v < M² ≤ 2^s` stays below 1, and one correction makes it exact. A 32-bit multiply
-    /// replaces a division: chips without a divider (Cortex-M0) save most. Exhaustively tested
-    /// against `%` (`tests/tests/hash.rs`).
+    /// For `M ≤ 1024` (the moduli without [`Self::DIRECT`] use it): `q = (v · ⌈2^s/M⌉) >> s` is
+    /// `⌊v/M⌋` or one more, because the reciprocal's error times `v < M² ≤ 2^s` stays below 1;
+    /// one correction makes it exact. A 32-bit multiply replaces a division: chips without a
+    /// divider (Cortex-M0) save most. Exhaustively tested against `%` (`tests/tests/hash.rs`).
     #[inline]
     #[must_use]
     const fn mod_square(v: u32) -> u32 {
-        if Self::DIRECT.1 != 0 {
-            Self::mod_direct(v)
-        } else if Self::RECIPROCAL {
+        if Self::RECIPROCAL {
             let q = (v * Self::MAGIC) >> Self::SHIFT;
             let r = v.wrapping_sub(q * M);
             if r > v { r.wrapping_add(M) } else { r }
