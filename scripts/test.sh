@@ -80,6 +80,7 @@ fi
     # No reachable panic: the link fails if any panic survives in the noises it samples.
     cargo build --release -p firmware-cortex-m --bin nopanic --target thumbv7em-none-eabihf
     cargo build --release -p firmware-cortex-m --bin nopanic-spec --target thumbv7em-none-eabihf
+    cargo build --release -p firmware-cortex-m --bin nopanic-text --target thumbv7em-none-eabihf
 )
 bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
 

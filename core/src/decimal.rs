@@ -1,15 +1,24 @@
-//! Decimal text to `f32`, correctly rounded, with no panic path.
+//! Decimal text to and from `f32`, correctly rounded, with no panic path.
 //!
-//! The runtime description's text form ([`crate::spec`]) writes its floats with `f32`'s
-//! `Display` (the shortest decimal that reads back to the same bits) and must read them back
-//! exactly. `core`'s `f32::from_str` does that, but it keeps bounds-checked panics the
+//! The runtime description's text form ([`crate::spec`]) writes its floats as the shortest
+//! decimal that reads back to the same bits, and must read them back exactly. `core`'s
+//! `f32::from_str` and `f32`'s `Display` do that, but they keep bounds-checked panics the
 //! optimiser cannot remove (the firmware's no-panic proof fails on them) and about 20 KiB of
-//! code and tables on a Cortex-M. The text form needs far less: plain decimal notation
+//! code and tables on a Cortex-M.
+//!
+//! **Reading** needs far less: plain decimal notation
 //! (`-`, digits, one `.`), at most [`MAX_DIGITS`] digits, so the value is `D / 10^k` with `D`
 //! and `10^k` below 2³³⁴, and exact integer arithmetic on fixed-size numbers rounds it:
 //! normalise the quotient into `[1, 2)·2^e`, take the significand's bits by long division, and
 //! round the remainder to nearest, ties to even (IEEE 754's default, as `from_str`). Speed is
 //! not a concern: this runs once per setting, not per sample.
+//!
+//! **Writing** ([`write_f32`]) writes what `f32`'s `Display` writes, found the plain way
+//! rather than with Grisu or Ryū: the exact decimal expansion of the float (an integer
+//! `m · 2^e`, or `m · 5^-e / 10^-e`, both below 2³⁸⁴), then for 1, 2, … significant digits
+//! the expansion cut there and the cut plus one unit in its last place, the first length at
+//! which either reads back (checked with the reader above, so the two always agree), the one
+//! nearer the float when both do. Nine digits always suffice for an `f32`.
 
 /// The most digits (before and after the point together) a number may have. `f32`'s
 /// `Display` never writes more than 84 (39 before the point for `f32::MAX`, 45 after it for
@@ -67,6 +76,18 @@ impl Big {
             *slot = (lo << bits) | below;
         }
         self.0 = out;
+    }
+
+    /// `self / d` (`d > 0`), returning the remainder.
+    fn div_rem_small(&mut self, d: u32) -> u32 {
+        let d = u64::from(d.max(1));
+        let mut rem = 0u64;
+        for limb in self.0.iter_mut().rev() {
+            let t = (rem << 32) | u64::from(*limb);
+            *limb = (t / d) as u32;
+            rem = t % d;
+        }
+        rem as u32
     }
 
     /// `self - other`, for `self >= other`.
@@ -129,6 +150,166 @@ pub(crate) fn parse_f32(s: &str) -> Option<f32> {
         f32::from_bits(round_quotient(numerator, denominator)?)
     };
     Some(if negative { -magnitude } else { magnitude })
+}
+
+/// `0.d₁d₂…dₙ · 10^point` (`digits` most significant first, each `0..=9`) as the nearest
+/// `f32`, or `None` past `f32::MAX`. At most [`MAX_DIGITS`] digits and `|point| <= 60`, so
+/// both terms of the quotient stay below 10¹⁰⁰.
+fn value_of(digits: &[u8], point: i32) -> Option<f32> {
+    let mut numerator = Big::small(0);
+    for &d in digits {
+        numerator.mul_add(10, u32::from(d));
+    }
+    if numerator == Big::small(0) {
+        return Some(0.0);
+    }
+    let mut denominator = Big::small(1);
+    let shift = point - digits.len() as i32;
+    for _ in 0..shift.unsigned_abs() {
+        if shift > 0 {
+            numerator.mul_add(10, 0);
+        } else {
+            denominator.mul_add(10, 0);
+        }
+    }
+    round_quotient(numerator, denominator).map(f32::from_bits)
+}
+
+/// The most digits an `f32`'s exact decimal expansion has: `(2²⁴ - 1) · 5¹⁴⁹` has 112.
+const EXACT_DIGITS: usize = 112;
+
+/// Writes `v` as `f32`'s `Display` does: the shortest plain decimal that reads back to `v`
+/// (the one nearer `v` if two of that length do, the upper one on a tie; `-0` for negative zero; `inf`, `-inf` and
+/// `NaN` as they are). Module docs: how.
+pub(crate) fn write_f32<W: core::fmt::Write>(out: &mut W, v: f32) -> core::fmt::Result {
+    if v.is_nan() {
+        return out.write_str("NaN");
+    }
+    if v.is_sign_negative() {
+        out.write_char('-')?;
+    }
+    let a = v.abs();
+    if a == f32::INFINITY {
+        return out.write_str("inf");
+    }
+    if a == 0.0 {
+        return out.write_char('0');
+    }
+    // a = m · 2^e exactly.
+    let bits = a.to_bits();
+    let (m, e) = match bits >> 23 {
+        0 => (bits, -149),
+        biased => (bits & 0x007f_ffff | 1 << 23, biased as i32 - 150),
+    };
+    // The exact expansion: the integer n, and a = n / 10^s.
+    let mut n = Big::small(m);
+    let s = if e >= 0 {
+        n.shl(e as u32);
+        0
+    } else {
+        for _ in 0..e.unsigned_abs() {
+            n.mul_add(5, 0);
+        }
+        e.unsigned_abs() as i32
+    };
+    // Its digits, least significant first, without the trailing zeros: a = 0.d·10^point.
+    let mut lsb_first = [0u8; EXACT_DIGITS];
+    let (mut len, mut zeros) = (0usize, 0i32);
+    while n != Big::small(0) {
+        let d = n.div_rem_small(10) as u8;
+        if len == 0 && d == 0 {
+            zeros += 1;
+        } else if let Some(slot) = lsb_first.get_mut(len) {
+            *slot = d;
+            len += 1;
+        }
+    }
+    let point = len as i32 + zeros - s;
+    let mut digits = [0u8; EXACT_DIGITS];
+    for (slot, &d) in digits.iter_mut().zip(lsb_first.iter().take(len).rev()) {
+        *slot = d;
+    }
+    let exact = digits.get(..len).unwrap_or(&[]);
+    for p in 1..len.min(10) {
+        let Some((head, tail)) = exact.split_at_checked(p) else {
+            break;
+        };
+        let down_ok = value_of(head, point) == Some(a);
+        // The cut plus one unit in its last place (a carry out of the top makes it 1).
+        let mut up = [0u8; 9];
+        let mut up_point = point;
+        let mut up_len = p.min(up.len());
+        for (slot, &d) in up.iter_mut().zip(head) {
+            *slot = d;
+        }
+        let mut carry = true;
+        for slot in up.iter_mut().take(up_len).rev() {
+            if carry {
+                *slot += 1;
+                carry = *slot == 10;
+                if carry {
+                    *slot = 0;
+                }
+            }
+        }
+        if carry {
+            up = [0; 9];
+            up[0] = 1;
+            up_len = 1;
+            up_point += 1;
+        }
+        let up = up.get(..up_len).unwrap_or(&[]);
+        let up_ok = value_of(up, up_point) == Some(a);
+        if up_ok && down_ok {
+            // Both read back: the nearer, and on a tie (a tail of exactly 5) the one above,
+            // as `Display` does (2^-12 = 0.000244140625 writes as 0.00024414063).
+            return if tail.first().is_some_and(|&d| d >= 5) {
+                write_digits(out, up, up_point)
+            } else {
+                write_digits(out, head, point)
+            };
+        }
+        if up_ok {
+            return write_digits(out, up, up_point);
+        }
+        if down_ok {
+            return write_digits(out, head, point);
+        }
+    }
+    write_digits(out, exact, point)
+}
+
+/// An `f32` that displays through [`write_f32`]: as `f32`'s `Display`, without its panic
+/// paths (for messages that name a float, such as [`crate::Error`]'s).
+pub(crate) struct Shortest(pub(crate) f32);
+
+impl core::fmt::Display for Shortest {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write_f32(f, self.0)
+    }
+}
+
+/// Writes `0.d₁d₂…dₙ · 10^point` in plain notation (`d₁ != 0`, `dₙ != 0`).
+fn write_digits<W: core::fmt::Write>(out: &mut W, digits: &[u8], point: i32) -> core::fmt::Result {
+    let digit = |d: u8| char::from(b'0' + d % 10);
+    if point <= 0 {
+        out.write_str("0.")?;
+        for _ in 0..point.unsigned_abs() {
+            out.write_char('0')?;
+        }
+        for &d in digits {
+            out.write_char(digit(d))?;
+        }
+        return Ok(());
+    }
+    let before = point.unsigned_abs() as usize;
+    for i in 0..before.max(digits.len()) {
+        if i == before {
+            out.write_char('.')?;
+        }
+        out.write_char(digit(digits.get(i).copied().unwrap_or(0)))?;
+    }
+    Ok(())
 }
 
 /// The bits of the `f32` nearest `a / b` (`a, b > 0`), or `None` past `f32::MAX`.
@@ -280,6 +461,60 @@ mod tests {
             same(text);
             same(&format!("{text}1"));
         }
+    }
+
+    fn written(v: f32) -> String {
+        let mut s = String::new();
+        write_f32(&mut s, v).unwrap();
+        s
+    }
+
+    #[test]
+    fn floats_write_as_display() {
+        let mut rng = Rng(0x5151_5151_a5a5_a5a5);
+        let mut checked = 0;
+        let edges = [
+            0.0f32,
+            -0.0,
+            1.0,
+            0.1,
+            0.3,
+            2.0 / 3.0,
+            f32::MAX,
+            f32::MIN,
+            f32::MIN_POSITIVE,
+            f32::EPSILON,
+            f32::from_bits(1),
+            f32::from_bits(0x007f_ffff),
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::NAN,
+            1e10,
+            123_456_790.0,
+        ];
+        // Every power of two (the uneven rounding interval below them), their neighbours,
+        // random bit patterns, and floats with two quarter bits in [2^21, 2^24), whose
+        // shortest forms tie between two decimals of the same length.
+        let powers = (0..255u32).flat_map(|b| {
+            let v = b << 23;
+            [v, v + 1, v.wrapping_sub(1)].map(f32::from_bits)
+        });
+        let quarters = (0..20_000).map(|_| {
+            let x = (1u32 << 21) + (rng.next() as u32 % (3 << 21));
+            x as f32 + [0.25, 0.75, 0.5][(rng.next() % 3) as usize]
+        });
+        let mut rng2 = Rng(0x0123_4567_89ab_cdef);
+        let random = (0..300_000).map(|_| f32::from_bits(rng2.next() as u32));
+        for v in edges
+            .into_iter()
+            .chain(powers)
+            .chain(quarters)
+            .chain(random)
+        {
+            assert_eq!(written(v), format!("{v}"), "{:#x}", v.to_bits());
+            checked += 1;
+        }
+        assert!(checked > 300_000);
     }
 
     #[test]

@@ -2,6 +2,8 @@
 
 use core::fmt;
 
+use crate::decimal::Shortest;
+
 /// Why a configuration was refused.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
@@ -85,10 +87,18 @@ impl fmt::Display for Error {
             Error::OctaveCount { count, max } => {
                 write!(f, "octave count {count} is outside 1..={max}")
             }
-            Error::Lacunarity(v) => write!(f, "lacunarity {v} must be finite and in (0, 16]"),
-            Error::Gain(v) => write!(f, "gain {v} must be finite and in [-1, 1]"),
+            Error::Lacunarity(v) => write!(
+                f,
+                "lacunarity {} must be finite and in (0, 16]",
+                Shortest(*v)
+            ),
+            Error::Gain(v) => write!(f, "gain {} must be finite and in [-1, 1]", Shortest(*v)),
             Error::ClampedMean(v) => {
-                write!(f, "clamped-octave mean {v} must be finite and in [0, 4]")
+                write!(
+                    f,
+                    "clamped-octave mean {} must be finite and in [0, 4]",
+                    Shortest(*v)
+                )
             }
             Error::TooManyBands { count, max } => {
                 write!(f, "{count} wavelet bands given, at most {max} are allowed")
@@ -96,7 +106,8 @@ impl fmt::Display for Error {
             Error::BandWeight { index, value } => {
                 write!(
                     f,
-                    "band weight {value} at {index} must be finite and at most 1e6 in magnitude"
+                    "band weight {} at {index} must be finite and at most 1e6 in magnitude",
+                    Shortest(*value)
                 )
             }
             Error::FirstBand(b) => write!(f, "first band {b} is outside -24..=8"),
@@ -106,7 +117,11 @@ impl fmt::Display for Error {
                     "period {period} along axis {axis} is outside 1..=65536 cells"
                 )
             }
-            Error::PoissonMean(m) => write!(f, "Poisson mean {m} must be finite and in (0, 32]"),
+            Error::PoissonMean(m) => write!(
+                f,
+                "Poisson mean {} must be finite and in (0, 32]",
+                Shortest(*m)
+            ),
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")
             }

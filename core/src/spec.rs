@@ -38,7 +38,7 @@
 //! exactly). Numbers are plain decimals (`-0.5`, `2`, `.25`; no exponent, `inf` or `nan`) of at
 //! most 100 digits, read to the nearest `f32` (ties to even, as `f32::from_str`). Bad text is a
 //! [`ParseError`] naming the byte position and what was expected, never a panic (the firmware's
-//! `nopanic` proves it).
+//! `nopanic-text` proves it, for reading and for printing).
 //!
 //! # Examples
 //!
@@ -420,7 +420,7 @@ impl fmt::Display for Spec {
                 if i > 0 {
                     f.write_str(",")?;
                 }
-                write!(f, "{w}")?;
+                decimal::write_f32(f, *w)?;
             }
             f.write_str(match self.distribution {
                 Distribution::Gaussian => " distribution=gaussian",
@@ -434,14 +434,10 @@ impl fmt::Display for Spec {
             })?;
         }
         if let Some((kind, o)) = self.fractal {
-            write!(
-                f,
-                " {} octaves={} lacunarity={} gain={}",
-                kind_name(kind),
-                o.count(),
-                o.lacunarity(),
-                o.gain()
-            )?;
+            write!(f, " {} octaves={} lacunarity=", kind_name(kind), o.count())?;
+            decimal::write_f32(f, o.lacunarity())?;
+            f.write_str(" gain=")?;
+            decimal::write_f32(f, o.gain())?;
         }
         Ok(())
     }

@@ -1,11 +1,13 @@
 //! Fractal sums with arbitrary octave counts, lacunarity, gain, coordinates and footprints:
-//! refused settings are errors; accepted ones never panic and stay within their bound; filtered
-//! sums are symmetric in their footprints, and NaN or ±∞ coordinates sample 0 there.
+//! refused settings are errors; accepted ones never panic and stay within their bound (for every
+//! noise the runtime description names, `Base::ALL`, in I16F16 and f32); filtered sums are
+//! symmetric in their footprints, and NaN or ±∞ coordinates sample 0 there.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::spec::{Base, Spec};
 use bandnoise::{FilteredNoise, I16F16, Noise};
 use libfuzzer_sys::fuzz_target;
 
@@ -15,6 +17,7 @@ struct Input {
     lacunarity: f32,
     gain: f32,
     kind: u8,
+    base: u8,
     coords: [u32; 3],
     dpdx: [u32; 3],
     dpdy: [u32; 3],
@@ -61,4 +64,14 @@ fuzz_target!(|input: Input| {
         assert!(v.to_num::<f32>().abs() <= gb, "{v} > {gb}");
     }
     assert_eq!(filtered, g.sample_filtered(q, qy, qx));
+    // The same sum of any described noise.
+    let base = Base::ALL[usize::from(input.base) % Base::ALL.len()];
+    if let Ok(n) = Spec::new(base, 1).with_fractal(kind, octaves).build::<3>() {
+        let v: f32 = n.sample(p);
+        let b = Noise::<f32, 3>::amplitude_bound(&n);
+        assert!(v.is_finite() && v.abs() <= b, "{base}: {v} > {b}");
+        let v: I16F16 = n.sample(q);
+        let b = Noise::<I16F16, 3>::amplitude_bound(&n);
+        assert!(v.to_num::<f32>().abs() <= b, "{base}: {v} > {b}");
+    }
 });

@@ -579,6 +579,7 @@ fn consumers_take_their_noises_from_the_description() {
             "the no-panic proof",
         ),
         ("fuzz/fuzz_targets/lattice.rs", "the lattice fuzz target"),
+        ("fuzz/fuzz_targets/fractal.rs", "the fractal fuzz target"),
         ("fuzz/fuzz_targets/spec.rs", "the description's fuzz target"),
         ("tests/src/lib.rs", "the test helper Lattice"),
         ("gallery/src/main.rs", "the gallery"),

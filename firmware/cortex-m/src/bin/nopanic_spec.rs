@@ -1,10 +1,8 @@
 //! Proof that sampling a runtime description cannot panic: every noise `bandnoise::spec` names
 //! (every `Base`, so a noise added there is proved here unasked), with a period, a fractal sum
 //! and a dimension the optimiser cannot see, point samples in 1D–4D and gradients in 3D, in
-//! I16F16 and f32. Reading the text form is proved in `nopanic` (this program has no flash
-//! left). Printing a description is not proved: it uses `core`'s float formatting, whose
-//! bounds checks stay and whose code would not fit beside the rest in the QEMU machines'
-//! 256 KiB. As `nopanic` (which proves the typed noises, batches included: a spec's
+//! I16F16 and f32. Reading and printing the text form are proved in `nopanic-text`. As
+//! `nopanic` (which proves the typed noises, batches included: a spec's
 //! batch calls are the typed noise's), the panic handler calls a function that does not exist,
 //! so any surviving panic path fails the link. Its own program because the two together exceed
 //! the 256 KiB flash of the QEMU machines. Built, not run (release, thumbv7em).
