@@ -19,6 +19,14 @@ pub enum Error {
     Lacunarity(f32),
     /// A gain that is not finite or not in `[-1, 1]`.
     Gain(f32),
+    /// An output range for [`Levels`](crate::levels::Levels) that is not finite, not
+    /// increasing once read as I16F16, or beyond I16F16's ±32768.
+    Levels {
+        /// The low end given.
+        lo: f32,
+        /// The high end given.
+        hi: f32,
+    },
     /// A clamped-octave mean that is not finite or not in `[0, 4]`.
     ClampedMean(f32),
     /// More wavelet bands than a band list holds.
@@ -110,6 +118,12 @@ impl fmt::Display for Error {
                     Shortest(*value)
                 )
             }
+            Error::Levels { lo, hi } => write!(
+                f,
+                "output range [{}, {}] must be finite, increasing in I16F16 and within ±32768",
+                Shortest(*lo),
+                Shortest(*hi)
+            ),
             Error::FirstBand(b) => write!(f, "first band {b} is outside -24..=8"),
             Error::Period { axis, period } => {
                 write!(

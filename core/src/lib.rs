@@ -18,6 +18,8 @@
 //! * [`wavelet`]: Cook and DeRose's wavelet noise: band-limited bands over tiles computed at
 //!   compile time, projected onto surfaces, summed into multiband noise.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
+//! * [`levels`]: noise values as `u8`, `u16` and `i16` for LED, display and audio code, with
+//!   no division per sample.
 //! * [`spec`]: a noise as a value with a text form (`perlin seed=7 fbm octaves=4`), for
 //!   callers that cannot name Rust types; sampling it gives the typed noise's bits.
 //!
@@ -76,6 +78,7 @@ mod error;
 pub mod fractal;
 pub mod hash;
 pub mod lattice;
+pub mod levels;
 mod noise;
 mod real;
 pub mod spec;

@@ -57,6 +57,9 @@ pub(crate) mod sealed {
         /// A setting given as `f32` and rounded once to I16F16 when it was validated: floats
         /// take the `f32` (exactly), fixed point its rounding, so no sample converts a float.
         fn from_setting(f: f32, q: I16F16) -> Self;
+        /// The bits of `self` as I16F16 (nearest, saturating; NaN is 0), for the integer
+        /// outputs of [`levels`](crate::levels).
+        fn fixed_bits(self) -> i32;
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -98,6 +101,15 @@ pub(crate) mod sealed {
                 fn finite_or_zero(self) -> Self {
                     // ∞ − ∞ and NaN − NaN are NaN, which compares unequal to 0.
                     if self - self == 0.0 { self } else { 0.0 }
+                }
+                #[inline]
+                fn fixed_bits(self) -> i32 {
+                    match I16F16::checked_from_num(self) {
+                        Some(x) => x.to_bits(),
+                        None if self > 0.0 => i32::MAX,
+                        None if self < 0.0 => i32::MIN,
+                        None => 0,
+                    }
                 }
                 #[inline]
                 fn from_setting(f: f32, _: I16F16) -> Self {
@@ -146,6 +158,10 @@ pub(crate) mod sealed {
         #[inline]
         fn from_setting(_: f32, q: I16F16) -> Self {
             q
+        }
+        #[inline]
+        fn fixed_bits(self) -> i32 {
+            self.to_bits()
         }
     }
 }
