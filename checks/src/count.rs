@@ -2,6 +2,7 @@
 //! between two marker calls, so QEMU's instruction trace can count what one sample costs.
 
 use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::levels::Levels;
 use bandnoise::wavelet::{TILE2_I16, Wavelet};
 use bandnoise::{I16F16, Noise, Real};
 
@@ -20,6 +21,18 @@ pub const NAMES: [&str; 9] = [
     "perlin 3D f32",
     "wavelet 2D I16F16",
     "wavelet 2D f32",
+];
+
+/// The workloads of [`run_outputs`], in its order: 8-bit outputs and the LED example, with
+/// their own baseline (the loop, the point and an integer sum). A program of their own (the
+/// firmware's `count-outputs`), so that they do not change how the optimiser inlines [`run`]'s
+/// noises.
+pub const OUTPUT_NAMES: [&str; 5] = [
+    "baseline u8",
+    "perlin 2D I16F16 u8",
+    "mnoise 2D I16F16 u8",
+    "perlin 2D f32 u8",
+    "led frame",
 ];
 
 /// A point for sample `i`, away from the lattice.
@@ -43,6 +56,18 @@ fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) 
     acc
 }
 
+/// As [`workload`], for integer outputs.
+#[inline(always)]
+fn workload_u8<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> u8) -> u32 {
+    let mut acc = 0u32;
+    begin();
+    for i in 0..SAMPLES {
+        acc = acc.wrapping_add(u32::from(f(core::hint::black_box(point::<R, D>(i)))));
+    }
+    end();
+    acc
+}
+
 /// Runs every workload between `begin()` and `end()` (two distinct `#[inline(never)]` functions
 /// of the firmware, which the trace recognises by name).
 pub fn run(begin: fn(), end: fn()) -> u32 {
@@ -57,5 +82,27 @@ pub fn run(begin: fn(), end: fn()) -> u32 {
     acc ^= workload::<f32, 3>(begin, end, |q| p.sample(q));
     acc ^= workload::<I16F16, 2>(begin, end, |q| w.sample(q));
     acc ^= workload::<f32, 2>(begin, end, |q| w.sample(q));
+    acc
+}
+
+/// Runs the workloads of [`OUTPUT_NAMES`] as [`run`] does.
+pub fn run_outputs(begin: fn(), end: fn()) -> u32 {
+    let (m, p) = (MNoise::<61>::new(1), Perlin::new(1));
+    // 8-bit outputs through the noise's whole range, as an LED firmware would set them up.
+    let levels = Levels::symmetric(p.amplitude_bound::<2>()).unwrap_or_default();
+    let mlevels = Levels::symmetric(m.amplitude_bound::<2>()).unwrap_or_default();
+    let mut acc = workload_u8::<I16F16, 2>(begin, end, |q| (q[0] + q[1]).to_bits() as u8);
+    acc ^= workload_u8::<I16F16, 2>(begin, end, |q| levels.u8(p.sample(q)));
+    acc ^= workload_u8::<I16F16, 2>(begin, end, |q| mlevels.u8(m.sample(q)));
+    acc ^= workload_u8::<f32, 2>(begin, end, |q| levels.u8(p.sample(q)));
+    // The LED example: one frame of the strip per sample (the script divides by the LEDs).
+    let fire = crate::led::Fire::new();
+    let mut strip = [[0u8; 3]; crate::led::LEDS];
+    begin();
+    for t in 0..SAMPLES {
+        fire.render(core::hint::black_box(t), &mut strip);
+        acc = acc.wrapping_add(u32::from(strip[t as usize % crate::led::LEDS][1]));
+    }
+    end();
     acc
 }

@@ -66,7 +66,23 @@ pub struct Levels {
     scale: u32,
 }
 
+impl Default for Levels {
+    /// [`Levels::UNIT`].
+    fn default() -> Self {
+        Self::UNIT
+    }
+}
+
 impl Levels {
+    /// The map of `[-1, 1]`, the range of most of the crate's noises in their common
+    /// dimensions: `Levels::new(-1.0, 1.0)`, as a constant.
+    pub const UNIT: Levels = Levels {
+        lo: -65_536,
+        shift: 1,
+        width: 65_536,
+        scale: 32_768,
+    };
+
     /// The map of `[lo, hi]` onto `0..=65535` (module docs: how the ends are rounded).
     ///
     /// # Errors
@@ -223,6 +239,12 @@ mod tests {
             assert_eq!(i32::from(l.i16(v)), i32::from(l.u16(v)) - 32768);
         }
         assert_eq!(l.i16(0.0f32), 0);
+    }
+
+    #[test]
+    fn the_unit_range_is_its_constant() {
+        assert_eq!(Levels::new(-1.0, 1.0), Ok(Levels::UNIT));
+        assert_eq!(Levels::default(), Levels::UNIT);
     }
 
     #[test]

@@ -174,9 +174,41 @@ pub(crate) mod sealed {
 #[cfg(any(test, bandnoise_armv6m))]
 #[inline]
 fn mul_fraction_halves(a: i32, b: i32) -> i32 {
+    mul_halves(a, b, 1 << 15)
+}
+
+/// `⌊a·b / 2¹⁶⌋` modulo 2³² (I16F16's `wrapping_mul`) from 32-bit multiplies, as
+/// [`mul_fraction_halves`] without its rounding.
+#[cfg(any(test, bandnoise_armv6m))]
+#[inline]
+fn mul_floor_halves(a: i32, b: i32) -> i32 {
+    mul_halves(a, b, 0)
+}
+
+/// I16F16's `saturating_mul` on ARMv6-M: where both factors are below 128 in magnitude the
+/// product is below 2¹⁴ and cannot saturate, so [`mul_floor_halves`] gives it (the fractal
+/// sums' amplitudes, gains, frequencies and octave values); otherwise the 64-bit product.
+#[cfg(any(test, bandnoise_armv6m))]
+#[inline]
+fn saturating_mul_halves(a: i32, b: i32) -> i32 {
+    if (a.unsigned_abs() | b.unsigned_abs()) < 1 << 23 {
+        mul_floor_halves(a, b)
+    } else {
+        I16F16::from_bits(a)
+            .saturating_mul(I16F16::from_bits(b))
+            .to_bits()
+    }
+}
+
+/// `⌊(a·b + round) / 2¹⁶⌋` modulo 2³² (`round` below 2¹⁶): with `ah = a >> 16` (arithmetic)
+/// and `al`, `bl` in `[0, 2¹⁶)`, `a·b = (a·bh + ah·bl)·2¹⁶ + al·bl` exactly, and only
+/// `al·bl + round < 2³²` is below the point.
+#[cfg(any(test, bandnoise_armv6m))]
+#[inline]
+fn mul_halves(a: i32, b: i32, round: u32) -> i32 {
     let (ah, al) = (a >> 16, a as u32 & 0xFFFF);
     let (bh, bl) = (b >> 16, b as u32 & 0xFFFF);
-    let low = al.wrapping_mul(bl).wrapping_add(1 << 15) >> 16;
+    let low = al.wrapping_mul(bl).wrapping_add(round) >> 16;
     (a.wrapping_mul(bh))
         .wrapping_add(ah.wrapping_mul(bl as i32))
         .wrapping_add(low as i32)
@@ -582,10 +614,17 @@ impl Real for I16F16 {
     }
     #[inline]
     fn saturating_mul(self, o: Self) -> Self {
+        // ARMv6-M has no 32 × 32 → 64-bit multiply: small factors take 32-bit ones.
+        #[cfg(bandnoise_armv6m)]
+        return I16F16::from_bits(saturating_mul_halves(self.to_bits(), o.to_bits()));
+        #[cfg(not(bandnoise_armv6m))]
         I16F16::saturating_mul(self, o)
     }
     #[inline]
     fn wrapping_mul(self, o: Self) -> Self {
+        #[cfg(bandnoise_armv6m)]
+        return I16F16::from_bits(mul_floor_halves(self.to_bits(), o.to_bits()));
+        #[cfg(not(bandnoise_armv6m))]
         I16F16::wrapping_mul(self, o)
     }
     #[inline]
@@ -670,6 +709,54 @@ mod tests {
             );
             check((next() & 0x1_FFFF).min(0x1_0000) as i32, next() as i32);
             check((next() as i32) >> 9, (next() as i32) >> 9);
+        }
+    }
+
+    /// The 32-bit forms of `wrapping_mul` and `saturating_mul` used on ARMv6-M give fixed's
+    /// bits: any pairs (wrapping), small and large pairs either side of the fast path's limit.
+    #[test]
+    fn halves_are_fixed_products() {
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x as u32
+        };
+        let check = |a: i32, b: i32| {
+            let (fa, fb) = (I16F16::from_bits(a), I16F16::from_bits(b));
+            assert_eq!(
+                mul_floor_halves(a, b),
+                fa.wrapping_mul(fb).to_bits(),
+                "{a:#x}·{b:#x}"
+            );
+            let sat = fa.saturating_mul(fb).to_bits();
+            assert_eq!(saturating_mul_halves(a, b), sat, "{a:#x}·{b:#x}");
+        };
+        let edges = [
+            0,
+            1,
+            -1,
+            0xFFFF,
+            0x1_0000,
+            -0x1_0000,
+            0x7F_FFFF,
+            -0x7F_FFFF,
+            0x80_0000,
+            -0x80_0000,
+            i32::MAX,
+            i32::MIN,
+        ];
+        for a in edges {
+            for b in edges {
+                check(a, b);
+            }
+        }
+        for _ in 0..1_000_000 {
+            check(next() as i32, next() as i32);
+            check((next() as i32) >> 8, (next() as i32) >> 8);
+            check((next() as i32) >> 9, (next() as i32) >> 9);
+            check((next() as i32) >> 12, next() as i32);
         }
     }
 

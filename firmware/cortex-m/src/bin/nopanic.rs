@@ -1,5 +1,5 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, batches, and the public
+//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, batches, integer outputs (`levels`), and the public
 //! helpers `from_ratio`, `unit_normal` and `erf`) in I16F16 and f32 on
 //! inputs the optimiser cannot see (`nopanic-spec` proves the runtime descriptions and
 //! `nopanic-text` their text form), and its panic handler calls a function that does not exist.
@@ -16,6 +16,7 @@ use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::{
     CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
 };
+use bandnoise::levels::Levels;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
 };
@@ -81,6 +82,13 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(rng.signed_uniform::<R>());
     if let Ok(poisson) = Poisson::new(black_box(2.5)) {
         add(R::from_i32(rng.poisson(&poisson) as i32));
+    }
+    // Integer outputs of any value, through a range the optimiser cannot see.
+    if let Ok(levels) = Levels::new(black_box(-0.7), black_box(0.9)) {
+        add(R::from_i32(
+            i32::from(levels.u16(p[0])) + i32::from(levels.i16(p[1])),
+        ));
+        add(R::from_i32(i32::from(levels.u8(p[2]))));
     }
     // The public helpers: every shift, any normal, any erf argument.
     add(R::from_ratio(black_box(-7), black_box(u32::MAX)));
