@@ -1,40 +1,10 @@
-//! The output workloads of `scripts/count-instructions.sh` (`bandnoise_checks::count::run_outputs`).
+//! Workloads for `scripts/count-instructions.sh` (see `bandnoise_checks::count`): 8-bit outputs
+//! and the LED example (`run_outputs`), in a program of its own so that they do not change how
+//! `count`'s noises are inlined.
 #![no_std]
 #![no_main]
 
-use core::panic::PanicInfo;
+/// Runs `run_outputs` instead of `run`.
+const OUTPUTS: bool = true;
 
-/// The virt machine's test device: 0x5555 passes.
-const TEST_DEVICE: *mut u32 = 0x0010_0000 as *mut u32;
-
-#[inline(never)]
-#[unsafe(no_mangle)]
-fn bandnoise_mark_begin() {
-    core::hint::black_box(1);
-}
-
-#[inline(never)]
-#[unsafe(no_mangle)]
-fn bandnoise_mark_end() {
-    core::hint::black_box(2);
-}
-
-fn exit(code: u32) -> ! {
-    // SAFETY: the virt machine's test device; the write ends the emulation.
-    unsafe { TEST_DEVICE.write_volatile(code) };
-    loop {}
-}
-
-#[riscv_rt::entry]
-fn main() -> ! {
-    core::hint::black_box(bandnoise_checks::count::run_outputs(
-        bandnoise_mark_begin,
-        bandnoise_mark_end,
-    ));
-    exit(0x5555)
-}
-
-#[panic_handler]
-fn panic(_: &PanicInfo) -> ! {
-    exit((1 << 16) | 0x3333)
-}
+include!("../count_body.rs");
