@@ -41,31 +41,22 @@ fn point<R: Real, const D: usize>(i: u32) -> [R; D] {
     core::array::from_fn(|a| R::from_ratio((i * 40_503 + a as u32 * 21_011) as i32 & 0x7_FFFF, 16))
 }
 
+/// Runs `f` on [`SAMPLES`] points between `begin()` and `end()`, summing what it returns.
 #[inline(always)]
-fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> R) -> u32 {
+fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> u32) -> u32 {
     let mut acc = 0u32;
     begin();
     for i in 0..SAMPLES {
-        acc = acc.wrapping_add(
-            f(core::hint::black_box(point::<R, D>(i)))
-                .to_f32()
-                .to_bits(),
-        );
+        acc = acc.wrapping_add(f(core::hint::black_box(point::<R, D>(i))));
     }
     end();
     acc
 }
 
-/// As [`workload`], for integer outputs.
+/// A sample's bits, for [`workload`].
 #[inline(always)]
-fn workload_u8<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> u8) -> u32 {
-    let mut acc = 0u32;
-    begin();
-    for i in 0..SAMPLES {
-        acc = acc.wrapping_add(u32::from(f(core::hint::black_box(point::<R, D>(i)))));
-    }
-    end();
-    acc
+fn bits<R: Real>(v: R) -> u32 {
+    v.to_f32().to_bits()
 }
 
 /// Runs every workload between `begin()` and `end()` (two distinct `#[inline(never)]` functions
@@ -73,15 +64,15 @@ fn workload_u8<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D
 pub fn run(begin: fn(), end: fn()) -> u32 {
     let (m, p) = (MNoise::<61>::new(1), Perlin::new(1));
     let w = Wavelet::new(1, &TILE2_I16);
-    let mut acc = workload::<I16F16, 2>(begin, end, |q| q[0] + q[1]);
-    acc ^= workload::<I16F16, 2>(begin, end, |q| m.sample(q));
-    acc ^= workload::<f32, 2>(begin, end, |q| m.sample(q));
-    acc ^= workload::<I16F16, 2>(begin, end, |q| p.sample(q));
-    acc ^= workload::<f32, 2>(begin, end, |q| p.sample(q));
-    acc ^= workload::<I16F16, 3>(begin, end, |q| p.sample(q));
-    acc ^= workload::<f32, 3>(begin, end, |q| p.sample(q));
-    acc ^= workload::<I16F16, 2>(begin, end, |q| w.sample(q));
-    acc ^= workload::<f32, 2>(begin, end, |q| w.sample(q));
+    let mut acc = workload::<I16F16, 2>(begin, end, |q| bits(q[0] + q[1]));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(m.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(m.sample(q)));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(p.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(p.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(p.sample(q)));
+    acc ^= workload::<f32, 3>(begin, end, |q| bits(p.sample(q)));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(w.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(w.sample(q)));
     acc
 }
 
@@ -91,10 +82,10 @@ pub fn run_outputs(begin: fn(), end: fn()) -> u32 {
     // 8-bit outputs through the noise's whole range, as an LED firmware would set them up.
     let levels = Levels::symmetric(p.amplitude_bound::<2>()).unwrap_or_default();
     let mlevels = Levels::symmetric(m.amplitude_bound::<2>()).unwrap_or_default();
-    let mut acc = workload_u8::<I16F16, 2>(begin, end, |q| (q[0] + q[1]).to_bits() as u8);
-    acc ^= workload_u8::<I16F16, 2>(begin, end, |q| levels.u8(p.sample(q)));
-    acc ^= workload_u8::<I16F16, 2>(begin, end, |q| mlevels.u8(m.sample(q)));
-    acc ^= workload_u8::<f32, 2>(begin, end, |q| levels.u8(p.sample(q)));
+    let mut acc = workload::<I16F16, 2>(begin, end, |q| (q[0] + q[1]).to_bits() as u32 & 0xFF);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| u32::from(levels.u8(p.sample(q))));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| u32::from(mlevels.u8(m.sample(q))));
+    acc ^= workload::<f32, 2>(begin, end, |q| u32::from(levels.u8(p.sample(q))));
     // The LED example: one frame of the strip per sample (the script divides by the LEDs).
     let fire = crate::led::Fire::new();
     let mut strip = [[0u8; 3]; crate::led::LEDS];

@@ -34,11 +34,11 @@ impl Fire {
     /// Renders frame `t` (frames are 1/50 s apart) into `strip`.
     pub fn render(&self, t: u32, strip: &mut [[u8; 3]; LEDS]) {
         let time = I16F16::from_bits((t as i32).wrapping_mul(1311)); // 0.02 per frame
+        // Flames rise: the pattern moves up the strip (1.5 cells per second) and changes as it
+        // goes (time on the second axis).
+        let rise = time.wrapping_mul(I16F16::from_bits(3 << 15));
         for (i, led) in strip.iter_mut().enumerate() {
             let x = I16F16::from_bits(i as i32 * 9830); // 0.15 per LED
-            // Flames rise: the pattern moves up the strip (1.5 cells per second) and changes
-            // as it goes (time on the second axis).
-            let rise = time.wrapping_mul(I16F16::from_bits(3 << 15));
             let n = self.noise.sample([x.wrapping_sub(rise), time]);
             // Heat in [0, 1): fBm ~ [-0.9, 0.9] mapped, hotter at the strip's start.
             let base = I16F16::ONE - I16F16::from_bits(i as i32 * 1092); // 1 → 0 along the strip

@@ -78,14 +78,13 @@ impl Big {
         self.0 = out;
     }
 
-    /// `self / d` (`d > 0`), returning the remainder.
-    fn div_rem_small(&mut self, d: u32) -> u32 {
-        let d = u64::from(d.max(1));
+    /// `self / 10`, returning the remainder (the last decimal digit).
+    fn div_rem_10(&mut self) -> u32 {
         let mut rem = 0u64;
         for limb in self.0.iter_mut().rev() {
             let t = (rem << 32) | u64::from(*limb);
-            *limb = (t / d) as u32;
-            rem = t % d;
+            *limb = (t / 10) as u32;
+            rem = t % 10;
         }
         rem as u32
     }
@@ -122,39 +121,30 @@ pub(crate) fn parse_f32(s: &str) -> Option<f32> {
         Some(rest) => (true, rest),
         None => (false, s),
     };
-    let mut numerator = Big::small(0);
-    let mut denominator = Big::small(1);
-    let (mut digits, mut point) = (0usize, false);
+    let mut digits = [0u8; MAX_DIGITS];
+    let (mut len, mut point) = (0usize, None);
     for b in body.bytes() {
         match b {
             b'0'..=b'9' => {
-                digits += 1;
-                if digits > MAX_DIGITS {
-                    return None;
-                }
-                numerator.mul_add(10, u32::from(b - b'0'));
-                if point {
-                    denominator.mul_add(10, 0);
-                }
+                *digits.get_mut(len)? = b - b'0';
+                len += 1;
             }
-            b'.' if !point => point = true,
+            b'.' if point.is_none() => point = Some(len),
             _ => return None,
         }
     }
-    if digits == 0 {
+    if len == 0 {
         return None;
     }
-    let magnitude = if numerator == Big::small(0) {
-        0.0
-    } else {
-        f32::from_bits(round_quotient(numerator, denominator)?)
-    };
+    let digits = digits.get(..len)?;
+    let magnitude = value_of(digits, point.unwrap_or(len) as i32)?;
     Some(if negative { -magnitude } else { magnitude })
 }
 
 /// `0.d₁d₂…dₙ · 10^point` (`digits` most significant first, each `0..=9`) as the nearest
-/// `f32`, or `None` past `f32::MAX`. At most [`MAX_DIGITS`] digits and `|point| <= 60`, so
-/// both terms of the quotient stay below 10¹⁰⁰.
+/// `f32`, or `None` past `f32::MAX`. The reader passes at most [`MAX_DIGITS`] digits and
+/// `0 <= point <= n`, the writer at most 9 digits and `|point| <= 46`, so both terms of the
+/// quotient stay below 10¹⁰⁰.
 fn value_of(digits: &[u8], point: i32) -> Option<f32> {
     let mut numerator = Big::small(0);
     for &d in digits {
@@ -179,8 +169,8 @@ fn value_of(digits: &[u8], point: i32) -> Option<f32> {
 const EXACT_DIGITS: usize = 112;
 
 /// Writes `v` as `f32`'s `Display` does: the shortest plain decimal that reads back to `v`
-/// (the one nearer `v` if two of that length do, the upper one on a tie; `-0` for negative zero; `inf`, `-inf` and
-/// `NaN` as they are). Module docs: how.
+/// (the one nearer `v` if two of that length do, the upper one on a tie; `-0` for negative
+/// zero; `inf`, `-inf` and `NaN` as they are). Module docs: how.
 pub(crate) fn write_f32<W: core::fmt::Write>(out: &mut W, v: f32) -> core::fmt::Result {
     if v.is_nan() {
         return out.write_str("NaN");
@@ -216,7 +206,7 @@ pub(crate) fn write_f32<W: core::fmt::Write>(out: &mut W, v: f32) -> core::fmt::
     let mut lsb_first = [0u8; EXACT_DIGITS];
     let (mut len, mut zeros) = (0usize, 0i32);
     while n != Big::small(0) {
-        let d = n.div_rem_small(10) as u8;
+        let d = n.div_rem_10() as u8;
         if len == 0 && d == 0 {
             zeros += 1;
         } else if let Some(slot) = lsb_first.get_mut(len) {

@@ -104,12 +104,7 @@ pub(crate) mod sealed {
                 }
                 #[inline]
                 fn fixed_bits(self) -> i32 {
-                    match I16F16::checked_from_num(self) {
-                        Some(x) => x.to_bits(),
-                        None if self > 0.0 => i32::MAX,
-                        None if self < 0.0 => i32::MIN,
-                        None => 0,
-                    }
+                    super::fixed_from_float(self).to_bits()
                 }
                 #[inline]
                 fn from_setting(f: f32, _: I16F16) -> Self {
@@ -212,6 +207,18 @@ fn mul_halves(a: i32, b: i32, round: u32) -> i32 {
     (a.wrapping_mul(bh))
         .wrapping_add(ah.wrapping_mul(bl as i32))
         .wrapping_add(low as i32)
+}
+
+/// A float as the nearest I16F16, saturating out of range, NaN as 0. `checked_from_num` has no
+/// panic path (unlike `saturating_from_num`, which panics on NaN).
+#[inline]
+fn fixed_from_float<F: fixed::traits::ToFixed + Copy + PartialOrd + Default>(v: F) -> I16F16 {
+    match I16F16::checked_from_num(v) {
+        Some(x) => x,
+        None if v > F::default() => I16F16::MAX,
+        None if v < F::default() => I16F16::MIN,
+        None => I16F16::ZERO,
+    }
 }
 
 /// The arithmetic the noises need, for `f32`, `f64` and [`I16F16`].
@@ -568,14 +575,7 @@ impl Real for I16F16 {
 
     #[inline]
     fn from_f32(v: f32) -> Self {
-        // `checked_from_num` has no panic path (unlike `saturating_from_num`, which panics on
-        // NaN): out of range saturates, NaN becomes 0.
-        match I16F16::checked_from_num(v) {
-            Some(x) => x,
-            None if v > 0.0 => I16F16::MAX,
-            None if v < 0.0 => I16F16::MIN,
-            None => I16F16::ZERO,
-        }
+        fixed_from_float(v)
     }
     #[inline]
     fn to_f32(self) -> f32 {
@@ -678,15 +678,19 @@ mod tests {
     /// `mul_fraction` (the form this target selects, and ARMv6-M's 16-bit halves) gives
     /// `mul_rn`'s bits wherever the product fits: every `self` in `[0, 2]` with `|o| < 2¹⁴`,
     /// every `self` in `[0, 1]` with any `o`, and any pair of factors below 2⁷.
-    #[test]
-    fn mul_fraction_is_mul_rn() {
-        let mut x = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
+    /// A small generator for the multiply tests (xorshift64, low 32 bits).
+    fn xorshift(mut x: u64) -> impl FnMut() -> u32 {
+        move || {
             x ^= x << 13;
             x ^= x >> 7;
             x ^= x << 17;
             x as u32
-        };
+        }
+    }
+
+    #[test]
+    fn mul_fraction_is_mul_rn() {
+        let mut next = xorshift(0x2545_f491_4f6c_dd1d);
         let check = |a: i32, b: i32| {
             let (fa, fb) = (I16F16::from_bits(a), I16F16::from_bits(b));
             let want = fa.mul_rn(fb).to_bits();
@@ -716,13 +720,7 @@ mod tests {
     /// bits: any pairs (wrapping), small and large pairs either side of the fast path's limit.
     #[test]
     fn halves_are_fixed_products() {
-        let mut x = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x as u32
-        };
+        let mut next = xorshift(0x9e37_79b9_7f4a_7c15);
         let check = |a: i32, b: i32| {
             let (fa, fb) = (I16F16::from_bits(a), I16F16::from_bits(b));
             assert_eq!(

@@ -59,11 +59,13 @@ fn figures<N: Noise<I16F16, 2> + Noise<f32, 2>>(noise: &N, fixed: bool) -> Figur
             seen[usize::from(v)] = true;
         }
     }
-    let line = (0..LINE).map(|i| at16(ORIGIN[0] + i as f32 * LINE_STEP, ORIGIN[1]));
+    let line: Vec<u16> = (0..LINE)
+        .map(|i| at16(ORIGIN[0] + i as f32 * LINE_STEP, ORIGIN[1]))
+        .collect();
     Figures {
         levels: seen.iter().filter(|&&s| s).count(),
-        flat_run: longest_run(line.clone().map(|v| v >> 8)),
-        flat_run_u16: longest_run(line),
+        flat_run: longest_run(line.iter().map(|v| v >> 8)),
+        flat_run_u16: longest_run(line.iter()),
         flat_run_noise: longest_run((0..LINE).map(|i| {
             let p = [ORIGIN[0] + i as f32 * LINE_STEP, ORIGIN[1]];
             (Noise::<f32, 2>::sample(noise, p) * 65536.0).round() as i32
