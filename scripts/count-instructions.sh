@@ -46,10 +46,10 @@ ratio = fixed / flt
 print(f"Cortex-M0: fixed-point 2D mNoise takes {ratio:.2f} of the instructions of soft-float f32 (goal: at most 0.20)")
 failed = ratio > 0.20
 # Issue 16's goals on the Cortex-M0 (FastLED 3.10.3 inoise16 at gcc -O2: 2D 217, 3D 462;
-# Gustavson's armnoise8 258). Goals met are asserted so that they stay met; goals still
-# open are reported.
+# Gustavson's armnoise8 258; mNoise's goal is 260). Goals met are asserted so that they stay
+# met; goals still open are reported.
 goals = [("perlin 2D I16F16", 217, True), ("perlin 3D I16F16", 462, True),
-         ("mnoise 2D I16F16", 260, False), ("wavelet 2D I16F16", 700, False)]
+         ("mnoise 2D I16F16", 260, True), ("wavelet 2D I16F16", 700, False)]
 for name, goal, asserted in goals:
     got = float(rows[name])
     verdict = "met" if got <= goal else ("MISSED" if asserted else "not yet met (open)")

@@ -117,6 +117,18 @@ fn the_reciprocal_reduction_is_exact_for_every_argument() {
 }
 
 #[test]
+fn the_seeded_cell_reduction_is_exact() {
+    // 61 (s = 21), a power of two, the largest direct modulus, and moduli without the small
+    // reciprocal (7, 257), which reduce the cell first.
+    assert!(Bbs::<61>::reduce_offset_is_exact());
+    assert!(Bbs::<2>::reduce_offset_is_exact());
+    assert!(Bbs::<7>::reduce_offset_is_exact());
+    assert!(Bbs::<64>::reduce_offset_is_exact());
+    assert!(Bbs::<131>::reduce_offset_is_exact());
+    assert!(Bbs::<257>::reduce_offset_is_exact());
+}
+
+#[test]
 fn chained_hashes_follow_olanos_formula() {
     type H = Bbs<61>;
     let h = |x: i64| reference(x, 61);

@@ -48,6 +48,98 @@ impl<const M: u32> Bbs<M> {
         x.rem_euclid(M as i32) as u32
     }
 
+    /// `(c + offset) mod M` for any cell `c` and an `offset` in `0..M` (a seed's translation
+    /// of the lattice), in `0..M`.
+    ///
+    /// On 32-bit targets (firmware, wasm32), where a signed division by a constant needs a
+    /// 32 × 32 → 64-bit multiply (a library call on ARMv6-M): every cell of an I16F16 point
+    /// lies in `−2¹⁵..2¹⁵`, and there ([`Self::SMALL`]) the biased sum `u = c + B + offset`,
+    /// with `B` the least multiple of `M` from 2¹⁵, is non-negative and below 2¹⁷, and one
+    /// 32-bit reciprocal multiply divides it exactly (the argument of [`Self::DIRECT`]): a
+    /// multiply, a shift, a multiply and a subtraction instead of a signed division, its sign
+    /// correction and a second reduction after the offset (about 11 instructions per axis on
+    /// the Cortex-M0). Other cells, and moduli without such a reciprocal, are
+    /// reduced first and then offset. 64-bit targets reduce the 64-bit sum once, without a
+    /// branch. Every form gives the same value for every input (tested exhaustively over the
+    /// small range, and at its edges and beyond).
+    #[inline]
+    #[must_use]
+    pub(crate) const fn reduce_offset(c: i32, offset: u32) -> u32 {
+        if cfg!(target_pointer_width = "64") {
+            Self::reduce_offset_wide(c, offset)
+        } else {
+            Self::reduce_offset_narrow(c, offset)
+        }
+    }
+
+    /// [`reduce_offset`](Self::reduce_offset) in 64-bit arithmetic.
+    #[inline]
+    const fn reduce_offset_wide(c: i32, offset: u32) -> u32 {
+        let () = Self::VALID;
+        (c as i64 + offset as i64).rem_euclid(M as i64) as u32
+    }
+
+    /// [`reduce_offset`](Self::reduce_offset) in 32-bit arithmetic.
+    #[inline]
+    const fn reduce_offset_narrow(c: i32, offset: u32) -> u32 {
+        let () = Self::VALID;
+        debug_assert!(offset < M);
+        let (bias, shift, magic) = Self::SMALL;
+        // For an I16F16 cell (an arithmetic shift by 16) the compiler proves this range.
+        if magic != 0 && c >= -32768 && c < 32768 {
+            // c + bias ≥ 0 since bias ≥ 2^15; the sum stays below 2^17 (see SMALL).
+            let u = (c + bias as i32) as u32 + offset;
+            return u - ((u * magic) >> shift) * M;
+        }
+        let r = Self::reduce(c) + offset;
+        if r >= M { r - M } else { r }
+    }
+
+    /// `(B, s, m)` for [`Self::reduce_offset`]: `B` the least multiple of `M` from 2¹⁵, and a
+    /// shift and reciprocal `m = ⌈2^s/M⌉` with which `(u·m) >> s = ⌊u/M⌋` for every
+    /// `u ≤ B + 2¹⁵ − 1 + M − 1` (the largest biased sum) in 32-bit arithmetic, or `m = 0`
+    /// where none exists. Exact when `u·e < 2^s` for the excess `e = m·M − 2^s`, and
+    /// `u·m < 2³²` keeps the product in 32 bits. For `M = 61`: `B = 32818`, `s = 21`.
+    const SMALL: (u32, u32, u32) = {
+        let bias = 32768u32.div_ceil(M) * M;
+        let max = (bias + 32767 + (M - 1)) as u64;
+        let mut s = 32;
+        let mut found = (bias, 0, 0);
+        while s > 0 {
+            s -= 1;
+            let m = (1u64 << s).div_ceil(M as u64);
+            let e = m * M as u64 - (1 << s);
+            if max * m < 1 << 32 && max * e < 1 << s {
+                found = (bias, s, m as u32);
+                break;
+            }
+        }
+        found
+    };
+
+    /// Both forms of [`reduce_offset`](Self::reduce_offset) against `rem_euclid` for every
+    /// cell in `−2¹⁵..2¹⁵` (the reciprocal's range) and a few beyond, every offset: true when
+    /// they all agree.
+    #[doc(hidden)]
+    #[must_use]
+    pub fn reduce_offset_is_exact() -> bool {
+        let beyond = [
+            i32::MIN,
+            i32::MIN + 1,
+            -32769,
+            32768,
+            32769,
+            i32::MAX - 1,
+            i32::MAX,
+        ];
+        (0..M).all(|o| {
+            (-32768..32768).chain(beyond).all(|c| {
+                let want = (c as i64 + o as i64).rem_euclid(M as i64) as u32;
+                Self::reduce_offset_narrow(c, o) == want && Self::reduce_offset_wide(c, o) == want
+            })
+        })
+    }
+
     /// [`reduce`](Self::reduce) of every lane, equal to it for every input, vectorisable: while
     /// every `|x| < 2²⁴ − 8192` the quotient comes from an `f32` division, floored by a
     /// truncating cast and one correction, and the remainder is corrected once each way (the

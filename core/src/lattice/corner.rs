@@ -143,13 +143,9 @@ impl<const M: u32, const D: usize> Lattice<D> for MNoise<M> {
     type Fade = Quintic;
     #[inline]
     fn corner_hashes(&self, cell: [i32; D]) -> [u32; MAX_CORNERS] {
-        let mut cells = [0u32; D];
-        for a in 0..D {
-            // Both in 0..M: one conditional subtraction reduces the sum. The result is in 0..M,
-            // so `c + 1 + h` in the chain stays within 2M.
-            let c = Bbs::<M>::reduce(cell[a]) + self.offset[a];
-            cells[a] = if c >= M { c - M } else { c };
-        }
+        // In 0..M, so `c + 1 + h` in the chain stays within 2M.
+        let cells: [u32; D] =
+            core::array::from_fn(|a| Bbs::<M>::reduce_offset(cell[a], self.offset[a]));
         let upper = cells.map(|c| c + 1);
         chain::corners(Order::LastFirst, self.inner[D - 1], cells, upper, |h, c| {
             Bbs::<M>.step(h, c)
