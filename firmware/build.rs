@@ -1,5 +1,5 @@
-//! Shared build script of the firmware crates: puts the crate's `memory.x` on the linker path
-//! and computes the expected values on the host.
+//! Shared build script of the firmware crates: puts the crate's memory map for the target on
+//! the linker path and computes the expected values on the host.
 use std::{env, fs, path::PathBuf};
 
 /// Frames the LED example renders (2 s at 50 frames per second).
@@ -8,9 +8,19 @@ const LED_FRAMES: u32 = 100;
 fn main() {
     let out = PathBuf::from(env::var_os("OUT_DIR").expect("OUT_DIR"));
     let manifest = PathBuf::from(env::var_os("CARGO_MANIFEST_DIR").expect("CARGO_MANIFEST_DIR"));
-    fs::copy(manifest.join("memory.x"), out.join("memory.x")).expect("memory.x");
+    // A crate may name a target's own memory map `memory-<machine>.x`: the Cortex-M4F runs on
+    // mps2-an386, whose code memory is larger than the Cortex-M0's microbit flash.
+    let target = env::var("TARGET").unwrap_or_default();
+    let an386 = manifest.join("memory-an386.x");
+    let memory = if target.starts_with("thumbv7em") && an386.exists() {
+        an386
+    } else {
+        manifest.join("memory.x")
+    };
+    fs::copy(&memory, out.join("memory.x")).expect("memory.x");
     println!("cargo:rustc-link-search={}", out.display());
     println!("cargo:rerun-if-changed=memory.x");
+    println!("cargo:rerun-if-changed=memory-an386.x");
     // This runs on the host: these are the host's numbers the firmware must reproduce.
     let sums = bandnoise_checks::checksums();
     let led = bandnoise_checks::led::checksum(LED_FRAMES);

@@ -49,7 +49,7 @@ failed = ratio > 0.20
 # Gustavson's armnoise8 258; mNoise's goal is 260). Goals met are asserted so that they stay
 # met; goals still open are reported.
 goals = [("perlin 2D I16F16", 217, True), ("perlin 3D I16F16", 462, True),
-         ("mnoise 2D I16F16", 260, True), ("wavelet 2D I16F16", 700, False)]
+         ("mnoise 2D I16F16", 260, True), ("wavelet 2D I16F16", 700, True)]
 for name, goal, asserted in goals:
     got = float(rows[name])
     verdict = "met" if got <= goal else ("MISSED" if asserted else "not yet met (open)")
