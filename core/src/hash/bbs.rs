@@ -58,10 +58,10 @@ impl<const M: u32> Bbs<M> {
     /// 32-bit reciprocal multiply divides it exactly (the argument of [`Self::DIRECT`]): a
     /// multiply, a shift, a multiply and a subtraction instead of a signed division, its sign
     /// correction and a second reduction after the offset (about 11 instructions per axis on
-    /// the Cortex-M0). Other cells, and moduli without such a reciprocal, are
-    /// reduced first and then offset. 64-bit targets reduce the 64-bit sum once, without a
-    /// branch. Every form gives the same value for every input (tested exhaustively over the
-    /// small range, and at its edges and beyond).
+    /// the Cortex-M0). Other cells, moduli without such a reciprocal, and 64-bit targets
+    /// (whose division by a constant is one multiply, and where the two forms cost the same
+    /// within 2%) reduce the cell first, then the offset sum. The forms give the same value
+    /// for every input (tested exhaustively over the small range, at its edges and beyond).
     #[inline]
     #[must_use]
     pub(crate) const fn reduce_offset(c: i32, offset: u32) -> u32 {
@@ -72,11 +72,12 @@ impl<const M: u32> Bbs<M> {
         }
     }
 
-    /// [`reduce_offset`](Self::reduce_offset) in 64-bit arithmetic.
+    /// [`reduce_offset`](Self::reduce_offset) for 64-bit targets and large cells: the cell
+    /// reduced, then offset and reduced once more.
     #[inline]
     const fn reduce_offset_wide(c: i32, offset: u32) -> u32 {
-        let () = Self::VALID;
-        (c as i64 + offset as i64).rem_euclid(M as i64) as u32
+        let r = Self::reduce(c) + offset;
+        if r >= M { r - M } else { r }
     }
 
     /// [`reduce_offset`](Self::reduce_offset) in 32-bit arithmetic.
@@ -91,8 +92,7 @@ impl<const M: u32> Bbs<M> {
             let u = (c + bias as i32) as u32 + offset;
             return u - ((u * magic) >> shift) * M;
         }
-        let r = Self::reduce(c) + offset;
-        if r >= M { r - M } else { r }
+        Self::reduce_offset_wide(c, offset)
     }
 
     /// `(B, s, m)` for [`Self::reduce_offset`]: `B` the least multiple of `M` from 2¹⁵, and a
