@@ -41,7 +41,7 @@ function params() {
     $('kind').value, $('number').value, number('seed'), number('zoom'),
     state.pan[0], state.pan[1], number('time'), period, $('fractal').value,
     number('octaves'), number('lacunarity'), number('gain'),
-    new Float32Array(state.bandWeights), $('distribution').value,
+    new Float32Array(state.bandWeights), $('distribution').value, $('tiling').value,
     $('projected').checked, $('palette').value,
   );
 }

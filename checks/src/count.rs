@@ -3,7 +3,7 @@
 
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
-use bandnoise::wavelet::{TILE2_I16, Wavelet};
+use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
 use bandnoise::{I16F16, Noise, Real};
 
 /// Samples per workload.
@@ -23,31 +23,56 @@ pub const NAMES: [&str; 9] = [
     "wavelet 2D f32",
 ];
 
-/// The workloads of [`run_outputs`], in its order: 8-bit outputs and the LED example, with
-/// their own baseline (the loop, the point and an integer sum). A program of their own (the
-/// firmware's `count-outputs`), so that they do not change how the optimiser inlines [`run`]'s
-/// noises.
-pub const OUTPUT_NAMES: [&str; 5] = [
+/// The workloads of [`run_outputs`], in its order: 8-bit outputs, the LED example, and a 2D
+/// wavelet band in its varied and blended tilings at points spread over its whole 64² tile
+/// ([`tile_point`]; [`run`]'s points stay in one block), with their own baseline (the loop, the point and
+/// an integer sum). A program of their own (the firmware's `count-outputs`), so that they do
+/// not change how the optimiser inlines [`run`]'s noises.
+pub const OUTPUT_NAMES: [&str; 7] = [
     "baseline u8",
     "perlin 2D I16F16 u8",
     "mnoise 2D I16F16 u8",
     "perlin 2D f32 u8",
     "led frame",
+    "wavelet 2D I16F16 spread",
+    "wavelet 2D I16F16 blended",
 ];
 
-/// A point for sample `i`, away from the lattice.
+/// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
 #[inline(always)]
 fn point<R: Real, const D: usize>(i: u32) -> [R; D] {
     core::array::from_fn(|a| R::from_ratio((i * 40_503 + a as u32 * 21_011) as i32 & 0x7_FFFF, 16))
 }
 
-/// Runs `f` on [`SAMPLES`] points between `begin()` and `end()`, summing what it returns.
+/// A point for sample `i` of a 16-point Hammersley set over `[0, 64)²`, off the lattice: a
+/// sample spread over a 64² wavelet tile lands in its blocks' interiors, near one border or
+/// near two as often as in an image.
+#[inline(always)]
+fn tile_point<R: Real>(i: u32) -> [R; 2] {
+    let x = (i << 18) + 0x5E37;
+    let y = ((i.reverse_bits() >> 28) << 18) + 0x3A91;
+    [R::from_ratio(x as i32, 16), R::from_ratio(y as i32, 16)]
+}
+
+/// Runs `f` on [`SAMPLES`] points in `[0, 8)^D` between `begin()` and `end()`, summing what it
+/// returns.
 #[inline(always)]
 fn workload<R: Real, const D: usize>(begin: fn(), end: fn(), f: impl Fn([R; D]) -> u32) -> u32 {
+    workload_at(begin, end, point::<R, D>, f)
+}
+
+/// [`workload`] at the points `at(i)`.
+#[inline(always)]
+fn workload_at<R: Real, const D: usize>(
+    begin: fn(),
+    end: fn(),
+    at: fn(u32) -> [R; D],
+    f: impl Fn([R; D]) -> u32,
+) -> u32 {
     let mut acc = 0u32;
     begin();
     for i in 0..SAMPLES {
-        acc = acc.wrapping_add(f(core::hint::black_box(point::<R, D>(i))));
+        acc = acc.wrapping_add(f(core::hint::black_box(at(i))));
     }
     end();
     acc
@@ -95,5 +120,10 @@ pub fn run_outputs(begin: fn(), end: fn()) -> u32 {
         acc = acc.wrapping_add(u32::from(strip[t as usize % crate::led::LEDS][1]));
     }
     end();
+    // Over the whole 64² tile, both tilings.
+    let w = Wavelet::new(1, &TILE2_I16);
+    let b = w.with_tiling(Tiling::Blended);
+    acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(w.sample(q)));
+    acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(b.sample(q)));
     acc
 }

@@ -16,7 +16,7 @@ use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::TabledPerlin;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
-use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE3_I16};
+use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE3_I16, Tiling};
 use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
 
 /// Samples per checksum.
@@ -141,7 +141,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 5;
+const COMPOSED: usize = 7;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -150,6 +150,12 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
         Spec::new(base, seed)
             .with_period(period)
             .unwrap_or(Spec::new(base, seed))
+    };
+    let blended = |base| {
+        // Accepted for a wavelet base.
+        Spec::new(base, 3)
+            .with_tiling(Tiling::Blended)
+            .unwrap_or(Spec::new(base, 3))
     };
     [
         (
@@ -165,6 +171,8 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             100,
         ),
         ("multiband uniform 3D", uniform_multiband(), 3, 100),
+        ("blended wavelet 2D", blended(Base::Wavelet), 2, 200),
+        ("blended multiband 3D", blended(Base::Multiband), 3, 100),
         (
             "periodic perlin 3D",
             periodic(Base::Perlin, 4, &[5, 256, 1000]),
@@ -182,8 +190,9 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 
 /// Checksums of what is not a noise description: projected sampling, the cell hash and
 /// generator, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 4] = [
+const OTHER: [&str; 5] = [
     "multiband projected",
+    "blended multiband projected",
     "cell hash and generator",
     "tabled perlin 2D",
     "tabled perlin 3D",
@@ -206,13 +215,16 @@ fn all<R: Bits>(out: &mut [u32]) {
         push(spec_checksum::<R>(&spec, dims, range));
     }
     let spec = uniform_multiband();
-    let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution());
-    let mut f = Fnv::new();
-    for i in 0..POINTS / 4 {
-        let n = point::<R, 3>(i + 1000, 1);
-        f.add(multi.sample_projected(point::<R, 3>(i, 100), n).bits());
+    for tiling in [Tiling::Varied, Tiling::Blended] {
+        let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution())
+            .with_tiling(tiling);
+        let mut f = Fnv::new();
+        for i in 0..POINTS / 4 {
+            let n = point::<R, 3>(i + 1000, 1);
+            f.add(multi.sample_projected(point::<R, 3>(i, 100), n).bits());
+        }
+        push(f.0);
     }
-    push(f.0);
     // The cell hash and the cell generator: a hash, two uniforms and a Poisson count per cell.
     let mut f = Fnv::new();
     let hash = CellHash::new(5);

@@ -387,11 +387,25 @@ fn split_far(x: f64) -> (i32, f64) {
     if !x.is_finite() {
         return (0, 0.0);
     }
-    // |x| >= 2^31 > 2^53 is false for f64 in general, so keep the fraction; fmod is exact.
+    // |x| >= 2^31 > 2^53 is false for f64 in general, so keep the fraction.
     let fl = libm::floor(x);
     let frac = x - fl;
-    let wrapped = libm::fmod(fl, 4_294_967_296.0); // exact, in (-2^32, 2^32)
-    ((wrapped as i64) as i32, frac)
+    (low_bits(fl), frac)
+}
+
+/// The low 32 bits (two's complement) of the integer-valued finite `fl`: the cell modulo 2³²,
+/// exactly, with integer operations (no `fmod` and its 128-bit division).
+fn low_bits(fl: f64) -> i32 {
+    if fl.abs() < 9_223_372_036_854_775_808.0 {
+        // Below 2⁶³ the conversion is exact.
+        return fl as i64 as i32;
+    }
+    // fl = m · 2^s with the 53-bit significand m and s ≥ 11: the low 32 bits of m << s.
+    let bits = fl.to_bits();
+    let m = (bits & ((1 << 52) - 1)) | 1 << 52;
+    let s = ((bits >> 52) & 0x7FF) as u32 - 1075;
+    let low = if s < 32 { (m << s) as u32 } else { 0 };
+    (if fl < 0.0 { low.wrapping_neg() } else { low }) as i32
 }
 
 macro_rules! impl_real_float {
@@ -675,9 +689,28 @@ mod tests {
     use super::sealed::Sealed;
     use super::*;
 
-    /// `mul_fraction` (the form this target selects, and ARMv6-M's 16-bit halves) gives
-    /// `mul_rn`'s bits wherever the product fits: every `self` in `[0, 2]` with `|o| < 2¹⁴`,
-    /// every `self` in `[0, 1]` with any `o`, and any pair of factors below 2⁷.
+    /// `low_bits` equals the remainder modulo 2³² that `fmod` gives, around every boundary.
+    #[test]
+    fn low_bits_is_the_cell_modulo_2_32() {
+        for e in 30..1024 {
+            let p = libm::ldexp(1.0, e);
+            for v in [
+                p,
+                p + 1.0,
+                p - 1.0,
+                p * 1.5,
+                p * 1.999_999_999,
+                p + 4_294_967_297.0,
+            ] {
+                for x in [v, -v] {
+                    let x = libm::floor(x);
+                    let want = libm::fmod(x, 4_294_967_296.0) as i64 as i32;
+                    assert_eq!(super::low_bits(x), want, "{x:e}");
+                }
+            }
+        }
+    }
+
     /// A small generator for the multiply tests (xorshift64, low 32 bits).
     fn xorshift(mut x: u64) -> impl FnMut() -> u32 {
         move || {
@@ -688,6 +721,9 @@ mod tests {
         }
     }
 
+    /// `mul_fraction` (the form this target selects, and ARMv6-M's 16-bit halves) gives
+    /// `mul_rn`'s bits wherever the product fits: every `self` in `[0, 2]` with `|o| < 2¹⁴`,
+    /// every `self` in `[0, 1]` with any `o`, and any pair of factors below 2⁷.
     #[test]
     fn mul_fraction_is_mul_rn() {
         let mut next = xorshift(0x2545_f491_4f6c_dd1d);

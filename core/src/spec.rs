@@ -25,7 +25,7 @@
 //! |---|---|---|
 //! | `seed=` | `0..=4294967295` | 0 |
 //! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice noises) | not periodic |
-//! | `tiling=` | `varied` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `varied` |
+//! | `tiling=` | `varied`, `blended` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `varied` |
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
 //! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
@@ -430,6 +430,7 @@ impl fmt::Display for Spec {
         if self.base.is_wavelet() {
             f.write_str(match self.tiling {
                 Tiling::Varied => " tiling=varied",
+                Tiling::Blended => " tiling=blended",
                 Tiling::Periodic => " tiling=periodic",
             })?;
         }
@@ -603,9 +604,10 @@ impl FromStr for Spec {
                         })?;
                 }
                 "tiling" => {
-                    const E: &str = "a tiling (varied, periodic)";
+                    const E: &str = "a tiling (varied, blended, periodic)";
                     let tiling = match needs_value(E)? {
                         "varied" => Tiling::Varied,
+                        "blended" => Tiling::Blended,
                         "periodic" => Tiling::Periodic,
                         _ => return Err(err(value_at, E)),
                     };

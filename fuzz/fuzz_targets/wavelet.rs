@@ -1,4 +1,4 @@
-//! Wavelet noise with arbitrary coordinates, normals and band lists (weights zero, NaN, huge):
+//! Wavelet noise in every tiling with arbitrary coordinates, normals and band lists (weights zero, NaN, huge):
 //! no panic; refused configurations are errors; accepted ones give finite values within their
 //! documented bounds (uniform distributions within [-1, 1]); a NaN or ±∞ coordinate samples 0
 //! there, bit for bit (bands, multiband, projected); any finite non-zero normal, however large
@@ -8,7 +8,7 @@
 
 use arbitrary::Arbitrary;
 use bandnoise::wavelet::{
-    Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, unit_normal,
+    Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, unit_normal,
 };
 use bandnoise::{I16F16, Noise, ProjectedNoise};
 use libfuzzer_sys::fuzz_target;
@@ -21,6 +21,7 @@ struct Input {
     first: i32,
     weights: Vec<f32>,
     uniform: bool,
+    tiling: u8,
 }
 
 fuzz_target!(|input: Input| {
@@ -28,8 +29,9 @@ fuzz_target!(|input: Input| {
     let n = input.normal.map(f32::from_bits);
     let q = input.coords.map(|b| I16F16::from_bits(b as i32));
     let nq = input.normal.map(|b| I16F16::from_bits(b as i32));
-    let band3 = Wavelet::new(input.seed, &TILE3_I16);
-    let band2 = Wavelet::new(input.seed, &TILE2_I16);
+    let tiling = [Tiling::Varied, Tiling::Blended, Tiling::Periodic][input.tiling as usize % 3];
+    let band3 = Wavelet::new(input.seed, &TILE3_I16).with_tiling(tiling);
+    let band2 = Wavelet::new(input.seed, &TILE2_I16).with_tiling(tiling);
     let b3 = Noise::<f32, 3>::amplitude_bound(&band3);
     for v in [band3.sample(p), band2.sample([p[0], p[1]])] {
         assert!(v.is_finite() && v.abs() <= b3.max(Noise::<f32, 2>::amplitude_bound(&band2)));
@@ -82,7 +84,7 @@ fuzz_target!(|input: Input| {
             assert!(input.weights.len() > 16 || bad_weight || !(-24..=8).contains(&input.first));
         }
         Ok(bands) => {
-            let m = Multiband::new(input.seed, &TILE3_I16, bands, distribution);
+            let m = Multiband::new(input.seed, &TILE3_I16, bands, distribution).with_tiling(tiling);
             let bound = Noise::<f32, 3>::amplitude_bound(&m);
             let v: f32 = m.sample(p);
             assert!(v.is_finite() && v.abs() <= bound, "{v} > {bound}");

@@ -1,7 +1,7 @@
 // End-to-end test of the demo page in Debian's Chromium, driven by playwright-core.
 // Serves web/ on 127.0.0.1, then checks what a person would: it renders, every noise differs,
-// dragging a band bar changes the spectrum, f32 and fixed point agree, bad input shows a message
-// and leaves the page working, and the browser benchmark runs. Screenshots go to target/e2e/.
+// each wavelet tiling differs, dragging a band bar changes the spectrum, f32 and fixed point
+// agree, bad input shows a message and leaves the page working, and the browser benchmark runs. Screenshots go to target/e2e/.
 // Prints "N passed, N failed" and exits non-zero on any failure.
 import { chromium } from 'playwright-core';
 import { spawn } from 'node:child_process';
@@ -91,6 +91,23 @@ await test('every noise kind gives a different image', async () => {
     await page.screenshot({ path: `${artifacts}/demo-${kind}.png` });
   }
   assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+});
+
+await test('each wavelet tiling gives a different image', async () => {
+  await set('kind', 'wavelet');
+  await set('zoom', '4'); // 64 coefficients across: several tile blocks
+  const hashes = new Map();
+  for (const tiling of ['varied', 'blended', 'periodic']) {
+    await set('tiling', tiling);
+    const s = await canvas('noise');
+    assert.ok(s.variance > 200, `${tiling}: variance ${s.variance}`);
+    assert.equal(await message(), '');
+    hashes.set(tiling, s.hash);
+    await page.screenshot({ path: `${artifacts}/demo-wavelet-${tiling}.png` });
+  }
+  assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+  await set('tiling', 'varied');
+  await set('zoom', '32');
 });
 
 await test('dragging a band-weight bar changes the spectrum', async () => {

@@ -243,14 +243,28 @@ impl<const D: usize, T: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>> AllTyp
 #[doc = include_str!("../../README.md")]
 mod readme {}
 
-/// Radially binned power of a square grid of samples (side a power of two), `spacing` units
-/// apart: returns `(fraction of the power below `cutoff` cycles per unit, total power)`, the mean
-/// (DC bin) excluded.
-pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f64) -> f64 {
+/// The power spectrum `|F(kx, ky)|²` of a square grid of samples (side a power of two, row
+/// by row), optionally under a separable Hann window (for fields that are not periodic over the
+/// grid: without it, the jump between the grid's opposite edges spreads power everywhere).
+pub fn power_spectrum(grid: &[f64], side: usize, hann: bool) -> Vec<f64> {
     use rustfft::{FftPlanner, num_complex::Complex};
     assert_eq!(grid.len(), side * side);
     let fft = FftPlanner::<f64>::new().plan_fft_forward(side);
-    let mut data: Vec<Complex<f64>> = grid.iter().map(|&v| Complex::new(v, 0.0)).collect();
+    let window: Vec<f64> = (0..side)
+        .map(|i| {
+            if hann {
+                let t = std::f64::consts::PI * (i as f64 + 0.5) / side as f64;
+                t.sin() * t.sin()
+            } else {
+                1.0
+            }
+        })
+        .collect();
+    let mut data: Vec<Complex<f64>> = grid
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| Complex::new(v * window[i % side] * window[i / side], 0.0))
+        .collect();
     for row in data.chunks_mut(side) {
         fft.process(row);
     }
@@ -264,28 +278,57 @@ pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f
             data[y * side + x] = column[y];
         }
     }
-    let freq = |k: usize| {
-        let k = if k > side / 2 {
-            k as f64 - side as f64
-        } else {
-            k as f64
-        };
-        k / (side as f64 * spacing)
+    data.iter().map(|c| c.norm_sqr()).collect()
+}
+
+/// The signed frequency of FFT bin `k` of `side` bins, in cycles per unit for samples
+/// `spacing` units apart.
+pub fn bin_frequency(k: usize, side: usize, spacing: f64) -> f64 {
+    let k = if k > side / 2 {
+        k as f64 - side as f64
+    } else {
+        k as f64
     };
+    k / (side as f64 * spacing)
+}
+
+/// The fraction of a square grid's power (samples `spacing` units apart, side a power of two,
+/// the mean excluded) below `cutoff` cycles per unit radially. `hann` as in [`power_spectrum`].
+pub fn low_frequency_fraction_windowed(
+    grid: &[f64],
+    side: usize,
+    spacing: f64,
+    cutoff: f64,
+    hann: bool,
+) -> f64 {
+    let mean = grid.iter().sum::<f64>() / grid.len() as f64;
+    let centred: Vec<f64> = grid.iter().map(|v| v - mean).collect();
+    let power = power_spectrum(&centred, side, hann);
     let (mut low, mut total) = (0.0, 0.0);
     for y in 0..side {
         for x in 0..side {
             if x == 0 && y == 0 {
                 continue;
             }
-            let power = data[y * side + x].norm_sqr();
-            total += power;
-            if freq(x).hypot(freq(y)) < cutoff {
-                low += power;
+            let p = power[y * side + x];
+            total += p;
+            let (fx, fy) = (
+                bin_frequency(x, side, spacing),
+                bin_frequency(y, side, spacing),
+            );
+            if fx.hypot(fy) < cutoff {
+                low += p;
             }
         }
     }
     low / total
+}
+
+/// Radially binned power of a square grid of samples (side a power of two), `spacing` units
+/// apart: the fraction of the power below `cutoff` cycles per unit, the mean (DC bin) excluded,
+/// without a window (for grids over which the field is periodic).
+pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f64) -> f64 {
+    low_frequency_fraction_windowed(grid, side, spacing, cutoff, false)
 }
 
 /// A number type's bad inputs, for the bad-input tests (`tests/tests/contract.rs`,

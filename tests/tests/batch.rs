@@ -189,6 +189,10 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
     check_all_types::<3, _>("wavelet i16", &Wavelet::new(3, &TILE3_I16), &mut rng);
     let periodic = Wavelet::new(6, &TILE2).with_tiling(Tiling::Periodic);
     check_all_types::<2, _>("wavelet periodic", &periodic, &mut rng);
+    let blended = Wavelet::new(6, &TILE2).with_tiling(Tiling::Blended);
+    check_all_types::<2, _>("wavelet blended", &blended, &mut rng);
+    let blended = Wavelet::new(6, &TILE3_I16).with_tiling(Tiling::Blended);
+    check_all_types::<3, _>("wavelet blended i16", &blended, &mut rng);
     // Fine grids: whole chunks inside one block (the vectorised path), and across borders.
     // Rows whose coefficients reach into the next block along y or z (every lane alike).
     for fine in [
@@ -198,6 +202,7 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
         for band in [
             Wavelet::new(1, &TILE3),
             Wavelet::new(1, &TILE3).with_tiling(Tiling::Periodic),
+            Wavelet::new(1, &TILE3).with_tiling(Tiling::Blended),
         ] {
             let mut out = vec![0.0f32; fine.len()];
             band.fill_grid(&fine, &mut out).unwrap();

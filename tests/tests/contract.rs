@@ -312,8 +312,8 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_gradient::<R, 3, _>(name, &f, |p| f.sample_with_gradient(p), rng);
     }
 
-    // Wavelet bands over the default tiles, in both tilings, and the quantized tiles.
-    for tiling in [Tiling::Varied, Tiling::Periodic] {
+    // Wavelet bands over the default tiles, in every tiling, and the quantized tiles.
+    for tiling in [Tiling::Varied, Tiling::Blended, Tiling::Periodic] {
         let name = &format!("wavelet {tiling:?}");
         let (b2, b3) = (
             Wavelet::new(6, &TILE2).with_tiling(tiling),

@@ -161,7 +161,7 @@ fn every_lattice_spec_samples_its_typed_noise_bit_for_bit() {
 fn wavelet_specs_sample_their_typed_noise_bit_for_bit() {
     let mut rng = Rng::from_env(181);
     let octaves = Octaves::default();
-    for tiling in [Tiling::Varied, Tiling::Periodic] {
+    for tiling in [Tiling::Varied, Tiling::Blended, Tiling::Periodic] {
         let spec = Spec::new(Base::Wavelet, 4)
             .with_tiling(tiling)
             .expect("wavelet");
@@ -198,7 +198,7 @@ fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
     let octaves = Octaves::new(3, 2.0, 0.5).expect("valid");
     let bands = Bands::new(-2, &[0.5, 1.0, 0.25, -0.125]).expect("valid");
     for distribution in [Distribution::Gaussian, Distribution::Uniform] {
-        for tiling in [Tiling::Varied, Tiling::Periodic] {
+        for tiling in [Tiling::Varied, Tiling::Blended, Tiling::Periodic] {
             let spec = Spec::new(Base::Multiband, 6)
                 .with_bands(bands)
                 .and_then(|s| s.with_distribution(distribution))

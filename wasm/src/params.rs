@@ -4,7 +4,7 @@
 use bandnoise::Error;
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::spec::{Base, Spec, SpecNoise};
-use bandnoise::wavelet::{Bands, Distribution};
+use bandnoise::wavelet::{Bands, Distribution, Tiling};
 use wasm_bindgen::prelude::*;
 
 use crate::render::WebTiles;
@@ -108,8 +108,9 @@ impl Params {
     /// type, distribution or palette; a zoom that is not a positive finite number (at most
     /// 1e6); a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; a period that
     /// is not a whole number in 0..=65536, or given for wavelet noise; band weights that are
-    /// not finite, too many, or all zero for multiband noise; projection asked for a lattice
-    /// noise; and the core's own errors. (JavaScript receives the message as a thrown string.)
+    /// not finite, too many, or all zero for multiband noise; a tiling other than varied,
+    /// blended or periodic (used by wavelet and multiband noise, ignored by the others);
+    /// projection asked for a lattice noise; and the core's own errors. (JavaScript receives the message as a thrown string.)
     #[wasm_bindgen(constructor)]
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -127,6 +128,7 @@ impl Params {
         gain: f64,
         band_weights: &[f32],
         distribution: &str,
+        tiling: &str,
         projected: bool,
         palette: &str,
     ) -> Result<Params, String> {
@@ -198,6 +200,19 @@ impl Params {
                 ));
             }
         };
+        let tiling = match tiling {
+            "varied" => Tiling::Varied,
+            "blended" => Tiling::Blended,
+            "periodic" => Tiling::Periodic,
+            _ => {
+                return Err(format!(
+                    "tiling must be varied, blended or periodic, not \"{tiling}\""
+                ));
+            }
+        };
+        if base.is_wavelet() {
+            spec = spec.with_tiling(tiling).map_err(describe)?;
+        }
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if base == Base::Multiband {
             if band_weights.iter().all(|w| *w == 0.0) {

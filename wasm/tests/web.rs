@@ -24,6 +24,7 @@ struct Args<'a> {
     fractal: &'a str,
     octaves: f64,
     bands: &'a [f32],
+    tiling: &'a str,
     projected: bool,
 }
 
@@ -38,6 +39,7 @@ const ARGS: Args = Args {
     fractal: "none",
     octaves: 6.0,
     bands: &BANDS,
+    tiling: "varied",
     projected: false,
 };
 
@@ -58,6 +60,7 @@ impl Args<'_> {
             0.5,
             self.bands,
             "gaussian",
+            self.tiling,
             self.projected,
             "grey",
         )
@@ -137,6 +140,17 @@ fn periodic_fractal_and_projected_noise_render() {
             kind: "wavelet",
             number: "fixed",
             projected: true,
+            ..ARGS
+        },
+        Args {
+            kind: "multiband",
+            tiling: "blended",
+            ..ARGS
+        },
+        Args {
+            kind: "wavelet",
+            number: "fixed",
+            tiling: "periodic",
             ..ARGS
         },
     ] {
@@ -235,6 +249,14 @@ fn bad_parameters_are_refused_with_a_message() {
             ..ARGS
         },
         "projection applies",
+    );
+    refused(
+        Args {
+            kind: "wavelet",
+            tiling: "tiled",
+            ..ARGS
+        },
+        "tiling must be",
     );
     assert!(Demo::new(100).is_err());
 }

@@ -21,5 +21,6 @@ pub(crate) mod seed;
 
 pub use bbs::Bbs;
 pub use cell::CellHash;
+pub(crate) use cell::mix;
 pub use perm::{PERLIN_2002, Permutation};
 pub use rng::{CellRng, Poisson};

@@ -4,16 +4,31 @@
 //! `N(p) = Σ_c n_c B(p − c)`: the quadratic B-spline through the tile's coefficients, 3 per axis
 //! (3ᵈ in all). Coefficient `c` sits at integer position `c` of the coefficient grid.
 //!
-//! **Seams.** With [`Tiling::Varied`], each tile-sized block of the coefficient grid reads the
-//! tile in one of its 48 orientations (6 axis permutations × 8 reflections; 8 in 2D), chosen by
-//! a hash of the block coordinate and the seed. A coefficient's value depends only on its global
-//! index, so `N` stays a quadratic B-spline of one coefficient grid: continuous with a continuous
-//! gradient across block borders, with no blending and hence none of the variance loss that
-//! §4.3's overlap blending must correct. What a border costs is band-limitedness: the two blocks'
-//! coefficients are unrelated there. The spectrum test (`tests/tests/wavelet.rs`) measures that
-//! leak and finds it small (the figures are printed there).
+//! **Seams.** A tile repeats over tile-sized blocks of the coefficient grid; [`Tiling`] says how.
+//!
+//! * [`Tiling::Periodic`] repeats it unchanged: band-limited, seamless, and periodic.
+//! * [`Tiling::Varied`] (the default) reads the tile in one of its 48 orientations (6 axis
+//!   permutations × 8 reflections; 8 in 2D) per block, chosen by a hash of the block and the
+//!   seed. A coefficient's value depends only on its global index, so `N` stays a quadratic
+//!   B-spline of one coefficient grid, continuous with a continuous gradient. But the blocks
+//!   abut: their coefficients are unrelated across a border, which leaks power below the band,
+//!   and a border between two orientations that are mirror images of each other along it shows
+//!   as a symmetric streak.
+//! * [`Tiling::Blended`] is §4.3's tile meshing made seamless. Each block reads the tile in a
+//!   hashed orientation *and* cyclically shifted by a hashed amount per axis (so no two blocks'
+//!   borders line up with the tile's content), and reaches 4 coefficients past each of its
+//!   borders. Where two blocks overlap (a zone 8 coefficients wide around every border), a
+//!   coefficient is the sum of both blocks' coefficients weighted by `sin θ` and `cos θ`, θ
+//!   rising linearly across the zone (a table of 8 exact dyadic weights, the same in every
+//!   number type). The squares of the weights sum to 1, so the variance of independent
+//!   coefficients is kept without the paper's correction pass; the zone is wide against the
+//!   band's wavelength, so the weights vary slowly and the band limit is kept. Tiles smaller
+//!   than 11 coefficients have no room for a zone: they are shifted and oriented, unblended.
+//!
+//! The figures measured for each tiling are in [`Tiling`]'s docs.
 
 use crate::batch::{LANES, lane};
+use crate::hash::{CellHash, mix};
 use crate::{Noise, Real};
 
 use super::tile::{Tile2, Tile3};
@@ -69,22 +84,44 @@ impl<const N: usize> TileData<3> for Tile3<N> {
     }
 }
 
-/// How the tile repeats over space.
+/// How the tile repeats over space (the module docs of `band.rs` explain each).
+///
+/// Measured by `tests/tests/seams.rs` (1024² samples from an origin off the lattice, four
+/// tiles, noise seeds 0 and 7; Hann-windowed spectra), `Blended` against `Varied`:
+///
+/// | one band | `Blended` | `Varied` | `Periodic` |
+/// |---|---|---|---|
+/// | 2D power below 1/8 cycle per coefficient | 0.005–0.006% | 0.27–0.47% | 0.0016% |
+/// | 3D projected along z, power below 1/8 (mean of 8 planes) | 0.77–0.78% | 1.8% | 0.5% |
+/// | 2D power at the tile's harmonics (0.39% if nothing repeats) | 0.44–0.50% | 10–14% | 100% |
+/// | variance near a block border against the interior, 2D / 3D | within ±2.3% / ±1.4% | up to +63% / +23% | — |
+/// | worst mirror correlation across a 2D border | 0.24 | 1.00 | — |
+///
+/// `Blended`'s zones cost time: a sample within 4 coefficients of a border sums two blocks per axis
+/// (four at a 2D corner), about 1.5× `Varied`'s instructions on average over a 64² tile on a
+/// Cortex-M0 (`bench/README.md`), which is why `Varied` is still the default.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Tiling {
     /// The tile repeats unchanged: the noise is periodic with the tile's size in coefficients.
     Periodic,
     /// Each tile-sized block uses one of the tile's 48 orientations (8 in 2D), chosen by a hash
-    /// of the block and the seed (§4.3): no visible repetition, and still continuous.
+    /// of the block and the seed (§4.3): continuous, but the blocks abut, so their borders
+    /// show (see the module docs for what they cost).
     #[default]
     Varied,
+    /// Each block reads the tile cyclically shifted and in one of its orientations, both
+    /// hashed, and neighbouring blocks blend their coefficients over 8 coefficients around
+    /// each border with weights whose squares sum to 1 (§4.3's tile meshing): no repetition,
+    /// no seams, and the band limit kept (figures in the module docs). Slower than `Varied`
+    /// near block borders. Spec text `tiling=blended`.
+    Blended,
 }
 
 /// One band of wavelet noise over a tile `T`, in 2D or 3D (the tile's dimension).
 ///
 /// Sampling follows the [`Noise`] contract: never panics; NaN and ±∞ coordinates are 0; cells
 /// beyond `i32` wrap; the result is finite, never `-0.0`, and within
-/// [`amplitude_bound`](Noise::amplitude_bound) (the tile's largest coefficient).
+/// [`amplitude_bound`](Noise::amplitude_bound) (the largest coefficient of the blended grid).
 ///
 /// # Examples
 ///
@@ -100,6 +137,8 @@ pub enum Tiling {
 pub struct Wavelet<'t, T> {
     tile: &'t T,
     seed: u32,
+    /// The seed's cell hash, which places each block (orientation and shift).
+    hash: CellHash,
     tiling: Tiling,
 }
 
@@ -128,6 +167,7 @@ impl<'t, T> Wavelet<'t, T> {
         Self {
             tile,
             seed,
+            hash: CellHash::new(seed),
             tiling: Tiling::Varied,
         }
     }
@@ -197,25 +237,71 @@ fn bspline3_derivatives<R: Real>(f: R) -> [R; 3] {
     [-g, g - f, f]
 }
 
-/// The orientation of a block of the coefficient grid: 48 in 3D, 8 in 2D.
-#[inline]
-pub(crate) fn block_variant<const D: usize>(seed: u32, block: [i32; D]) -> u32 {
-    orientation(seed, block, if D == 3 { 48 } else { 8 })
+/// Half the width, in coefficients, of the zone around a block border where the two blocks'
+/// coefficients blend (§4.3).
+pub(crate) const BLEND: usize = 4;
+
+/// `RAMP[k] = sin(π/2 · (k + ½) / (2·BLEND))` in units of 2⁻¹⁶ (rounded to nearest; every
+/// number type gets the same weights): at the `k`-th coefficient of a blend zone, the weight of
+/// the block the zone leads into. The block it leaves weighs `RAMP[2·BLEND − 1 − k]` (the
+/// cosine), so the squared weights sum to 1 within 2⁻¹⁵ and the coefficients keep their
+/// variance (§4.3's correction, folded into the weights).
+const RAMP: [i32; 2 * BLEND] = [6424, 19024, 30893, 41576, 50660, 57798, 62714, 65220];
+
+/// The most a blend zone's two weights sum to, `max_k RAMP[k] + RAMP[2·BLEND − 1 − k]`
+/// (`√2 · cos(π/(8·BLEND))`, 1.407): a blended coefficient is at most this many times the
+/// tile's largest (per axis), and so is the sum of a sample's weights along an axis.
+const BLEND_GAIN: f32 = {
+    let mut gain = 0;
+    let mut k = 0;
+    while k < 2 * BLEND {
+        let pair = RAMP[k] + RAMP[2 * BLEND - 1 - k];
+        if pair > gain {
+            gain = pair;
+        }
+        k += 1;
+    }
+    gain as f32 / 65536.0
+};
+
+/// How one block of the coefficient grid reads the tile: orientation `variant` (48 in 3D, 8 in
+/// 2D) after a cyclic shift of the tile by `shift` coefficients along each output axis.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Placement<const D: usize> {
+    variant: u32,
+    shift: [usize; D],
 }
 
-/// A 32-bit hash of a block coordinate and seed (murmur3's finaliser per component), mapped
-/// onto `0..count`.
+/// The blocks one axis of a sample reads: the first block, the local index of the sample's
+/// first coefficient in it (in `[h, n + h)`, `h` the blend half-width), and whether its three
+/// coefficients reach the next block too (in that block's blend zone, or past its border).
 #[inline]
-fn orientation<const D: usize>(seed: u32, block: [i32; D], count: u32) -> u32 {
-    let mut h = seed ^ 0x9E37_79B9;
-    for b in block {
-        h ^= b as u32;
-        h = h.wrapping_mul(0x85EB_CA6B);
-        h ^= h >> 13;
-        h = h.wrapping_mul(0xC2B2_AE35);
-        h ^= h >> 16;
+fn axis_span(first: i32, n: usize, h: usize) -> (i32, usize, bool) {
+    let (n, h) = (n as i32, h as i32);
+    // Block q owns coefficients [qn − h, qn + n + h): u = c + h puts its start at qn.
+    let u = first.wrapping_add(h);
+    let (q, r) = (u.div_euclid(n), u.rem_euclid(n));
+    if r < 2 * h {
+        // The first coefficient is in the zone where block q − 1 fades into q.
+        (q.wrapping_sub(1), (r - h + n) as usize, true)
+    } else {
+        (q, (r - h) as usize, r + 2 >= n)
     }
-    ((h as u64 * count as u64) >> 32) as u32
+}
+
+/// The weight of local coefficient `l` (`l + n` is passed, so it is not negative) of a block:
+/// 0 outside the block's reach `[−h, n + h)`, 1 inside `[h, n − h)`, the ramp between.
+#[inline]
+pub(crate) fn blend_weight<R: Real>(l_plus_n: usize, n: usize, h: usize) -> R {
+    if l_plus_n + h < n || l_plus_n >= 2 * n + h {
+        R::ZERO
+    } else if l_plus_n < n + h {
+        R::from_ratio(RAMP[(l_plus_n + h - n) % (2 * BLEND)], 16)
+    } else if l_plus_n >= 2 * n - h {
+        R::from_ratio(RAMP[(2 * n + h - 1 - l_plus_n) % (2 * BLEND)], 16)
+    } else {
+        R::ONE
+    }
 }
 
 /// Axis permutations of 3 axes (output axis → tile axis).
@@ -227,24 +313,6 @@ const PERMUTATIONS3: [[usize; 3]; 6] = [
     [2, 0, 1],
     [2, 1, 0],
 ];
-
-/// Maps a local index in block orientation `v` to the tile index.
-#[inline]
-pub(crate) fn orient<const D: usize>(local: [usize; D], v: u32, n: usize) -> [usize; D] {
-    let perms = D as u32 * (D as u32 - 1).max(1); // 6 in 3D, 2 in 2D
-    let (p, flips) = (v % perms, v / perms);
-    let mut out = [0usize; D];
-    for a in 0..D {
-        let target = if D == 3 {
-            PERMUTATIONS3[p as usize][a]
-        } else {
-            a ^ p as usize
-        };
-        let l = local[a];
-        out[target] = if flips >> a & 1 == 1 { n - 1 - l } else { l };
-    }
-    out
-}
 
 /// How block orientation `v` maps output axis `a`: the tile axis it reads and whether it runs
 /// backwards.
@@ -260,26 +328,45 @@ fn axis_map<const D: usize>(v: u32, a: usize) -> (usize, bool) {
     (target, flips >> a & 1 == 1)
 }
 
-/// The flat-index contribution of coefficient `j` along each axis, per lane, in block
-/// orientation `v`: `local0[a][l] + j` (wrapped into the next block past `n`), reflected where
-/// `v` flips the axis, times the stride of the tile axis it reads. (A function, not a closure:
-/// the closure stayed out of line in 3D, 6% more instructions per x86-64 sample.)
+/// The tile's flat index of local coefficient `local` (each component in `[−h, n + h)`, passed
+/// plus `n`) of a block placed by `place`.
+#[inline]
+pub(crate) fn tile_index<const D: usize>(
+    local_plus_n: [usize; D],
+    place: &Placement<D>,
+    n: usize,
+) -> usize {
+    let mut index = 0;
+    for (a, (&l, &shift)) in local_plus_n.iter().zip(&place.shift).enumerate() {
+        let (target, flip) = axis_map::<D>(place.variant, a);
+        let t = (l + shift) % n;
+        index += (if flip { n - 1 - t } else { t }) * [1, n, n * n][target];
+    }
+    index
+}
+
+/// The flat-index contribution of coefficient `j` along each axis, per lane, in the block
+/// `m` steps (one bit per axis) past the first: local index `local0[a][l] + j − n·m_a`, shifted
+/// and oriented by `place`, times the stride of the tile axis it reads. (A function, not a
+/// closure: the closure stayed out of line in 3D, 6% more instructions per x86-64 sample.)
 /// Written in place: returned by value, the 16-lane array is copied.
 #[inline]
 fn axis_offsets<const D: usize, const L: usize>(
     offset: &mut [[[usize; L]; 3]; D],
-    v: u32,
+    place: &Placement<D>,
+    m: usize,
     local0: &[[usize; L]; D],
     n: usize,
 ) {
     for a in 0..D {
-        let (target, flip) = axis_map::<D>(v, a);
+        let (target, flip) = axis_map::<D>(place.variant, a);
         let stride = [1, n, n * n][target];
+        // local + shift + 2n − n·m_a ≥ 0: local ≥ −h − n past the first block, h < n.
+        let add = place.shift[a] + if m >> a & 1 == 1 { n } else { 2 * n };
         for (j, oj) in offset[a].iter_mut().enumerate() {
             for (o, &l0) in oj.iter_mut().zip(&local0[a]) {
-                let l = l0 + j;
-                let l = if l >= n { l - n } else { l };
-                *o = (if flip { n - 1 - l } else { l }) * stride;
+                let t = (l0 + j + add) % n;
+                *o = (if flip { n - 1 - t } else { t }) * stride;
             }
         }
     }
@@ -336,8 +423,9 @@ impl<'t, T> Wavelet<'t, T> {
     /// set of weights.
     ///
     /// For each block the 3ᵈ coefficients touch (usually one; at most 2ᵈ), the block's
-    /// orientation is resolved once into per-axis offsets of the tile's flat index, so each
-    /// coefficient costs D additions and a load.
+    /// placement is resolved once into per-axis offsets of the tile's flat index, so each
+    /// coefficient costs D additions and a load; in a blend zone, the axis's weights are
+    /// multiplied by the block's blend weights first.
     #[inline]
     fn block_sums<R: Real, const D: usize, const K: usize>(
         &self,
@@ -348,74 +436,239 @@ impl<'t, T> Wavelet<'t, T> {
         T: TileData<D>,
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
-        let n = T::SIZE;
+        let (n, h) = (T::SIZE, self.half_width::<D>());
         let mut block = [0i32; D];
-        let mut local0 = [0usize; D];
-        let mut crossing = 0usize; // axes whose three coefficients reach the next block
+        let mut local0 = [[0usize; 1]; D];
+        let mut crossing = 0usize; // axes whose three coefficients read a second block
         for a in 0..D {
-            block[a] = first[a].div_euclid(n as i32);
-            local0[a] = first[a].rem_euclid(n as i32) as usize;
-            if local0[a] + 2 >= n {
-                crossing |= 1 << a;
-            }
+            let (b, l0, two) = axis_span(first[a], n, h);
+            block[a] = b;
+            local0[a] = [l0];
+            crossing |= (two as usize) << a;
         }
-        let variant = |m: usize| match self.tiling {
-            Tiling::Periodic => 0,
-            Tiling::Varied => {
-                let mut b = block;
-                for (a, ba) in b.iter_mut().enumerate() {
-                    *ba = ba.wrapping_add((m >> a & 1) as i32);
-                }
-                block_variant(self.seed, b)
-            }
-        };
-        // The flat-index contribution of coefficient j along each axis, read in orientation v.
-        let local0 = local0.map(|l| [l]);
         let mut sums = [[R::ZERO]; K];
+        let mut off = [[[0usize; 1]; 3]; D];
         if crossing == 0 && D == 2 {
-            // The common case in 2D (15 samples in 16 with 64-wide tiles): one block, every
-            // coefficient the sample's, summed without the block loop and its per-coefficient
-            // tests (a quarter of a Cortex-M0 sample's instructions, 30% on x86-64). In 3D
-            // the 27 coefficients dominate (x86-64: the same count either way), and a second
-            // copy of their sum would cost the demo's wasm budget about 3 KB.
-            let mut off = [[[0usize; 1]; 3]; D];
-            axis_offsets(&mut off, variant(0), &local0, n);
+            // The common case (most samples with 64-wide tiles): one block, every coefficient
+            // weighing its B-spline weight alone. (In 3D the loop below does the same with one
+            // block; a second copy of the 27-coefficient sum would cost the demo 3 KB.)
+            axis_offsets(&mut off, &self.placement(block), 0, &local0, n);
             for (sum, weights) in sums.iter_mut().zip(sets) {
-                self.add_block(sum, weights, &off, |_, _| true);
+                self.add_block(sum, weights, &off, every);
             }
             return sums.map(|[s]| s);
         }
-        // Along each axis, coefficients j < split[a] lie in the block, the rest in the next.
-        let mut split = [3usize; D];
-        for a in 0..D {
-            split[a] = (n - local0[a][0]).min(3);
-        }
-        // Sum block by block: each block's coefficients form a separable sub-range. The
+        // Sum block by block, each block's coefficients weighted by the B-spline times the
+        // block's blend weights (0 beyond its reach; with abutting blocks, 1 or 0): the
         // summing is `add_block` with one lane, so the batch path shares it.
-        let mut m = crossing;
-        loop {
-            let mut off = [[[0usize; 1]; 3]; D];
-            axis_offsets(&mut off, variant(m), &local0, n);
-            // Coefficient j along axis a belongs to this block when it is on the block's side
-            // of the split (loops run over 0..3 so every index is provably in range).
-            let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
-            for (sum, weights) in sums.iter_mut().zip(sets) {
-                self.add_block(sum, weights, &off, mine);
+        let sided: [_; K] = core::array::from_fn(|k| self.sided(&sets[k], crossing, &local0));
+        let members = self.members(crossing, &local0);
+        // Every subset of the crossing axes, largest first.
+        for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
+            let place = self.placement(self.step(block, m));
+            axis_offsets(&mut off, &place, m, &local0, n);
+            let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
+            for (sum, sides) in sums.iter_mut().zip(&sided) {
+                let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
+                self.add_block(sum, &weights, &off, mine);
             }
-            if m == 0 {
-                break;
-            }
-            m = (m - 1) & crossing; // the next subset of the crossing axes
         }
         sums.map(|[s]| s)
     }
+
+    /// The largest `|coefficient|` of the blended coefficient grid: the tile's, times
+    /// [`BLEND_GAIN`] per axis where blocks blend.
+    pub(crate) fn coefficient_bound<const D: usize>(&self) -> f32
+    where
+        T: TileData<D>,
+    {
+        let gain = if self.half_width::<D>() > 0 {
+            BLEND_GAIN
+        } else {
+            1.0
+        };
+        let mut bound = self.tile.max_abs();
+        for _ in 0..D {
+            bound *= gain;
+        }
+        bound
+    }
+
+    /// The blend half-width: [`BLEND`] with [`Tiling::Blended`] on a tile wide enough for two
+    /// zones and a sample between them, else 0 (blocks abut).
+    #[inline]
+    pub(crate) fn half_width<const D: usize>(&self) -> usize
+    where
+        T: TileData<D>,
+    {
+        match self.tiling {
+            Tiling::Blended if T::SIZE >= 2 * BLEND + 3 => BLEND,
+            _ => 0,
+        }
+    }
+
+    /// `block` moved one block along each axis whose bit is set in `m`.
+    #[inline]
+    fn step<const D: usize>(&self, mut block: [i32; D], m: usize) -> [i32; D] {
+        for (a, b) in block.iter_mut().enumerate() {
+            *b = b.wrapping_add((m >> a & 1) as i32);
+        }
+        block
+    }
+
+    /// Each axis's weights in the first block (`[0]`) and the next (`[1]`): along a crossing
+    /// axis, times each block's blend weights (the lanes share their coefficients there);
+    /// along other axes, unchanged (only the first block is read).
+    #[inline]
+    fn sided<R: Real, const D: usize, const L: usize>(
+        &self,
+        weights: &[[[R; L]; 3]; D],
+        crossing: usize,
+        local0: &[[usize; L]; D],
+    ) -> [[[[R; L]; 3]; D]; 2]
+    where
+        T: TileData<D>,
+    {
+        let (n, h) = (T::SIZE, self.half_width::<D>());
+        let mut sides = [*weights; 2];
+        if h == 0 {
+            // Abutting blocks: every coefficient of a block weighs 1 (the others are skipped).
+            return sides;
+        }
+        for (s, side) in sides.iter_mut().enumerate() {
+            for (a, axis) in side.iter_mut().enumerate() {
+                if crossing >> a & 1 == 1 {
+                    // The local index in block s, plus n: local0 + j − n·s + n.
+                    blend_axis(axis, local0[a][0] + n - s * n, n, h);
+                }
+            }
+        }
+        sides
+    }
+
+    /// Which of the three coefficients along each axis lie within the reach of the first
+    /// block (`[0]`) and the next (`[1]`), as bits: all three along axes that do not cross.
+    #[inline]
+    fn members<const D: usize, const L: usize>(
+        &self,
+        crossing: usize,
+        local0: &[[usize; L]; D],
+    ) -> [[u8; D]; 2]
+    where
+        T: TileData<D>,
+    {
+        members(
+            crossing,
+            core::array::from_fn(|a| local0[a][0]),
+            T::SIZE,
+            self.half_width::<D>(),
+        )
+    }
+
+    /// How the block at `block` reads the tile: identity when periodic; with
+    /// [`Tiling::Varied`], an orientation from [`orientation`]'s hash; with
+    /// [`Tiling::Blended`], [`blended_placement`].
+    // Out of line in wasm, where the demo's size budget counts each inlined copy (1.5 KB);
+    // inline elsewhere, where the call would cost the Cortex-M0 3% per sample.
+    #[cfg_attr(target_arch = "wasm32", inline(never))]
+    #[cfg_attr(not(target_arch = "wasm32"), inline)]
+    pub(crate) fn placement<const D: usize>(&self, block: [i32; D]) -> Placement<D>
+    where
+        T: TileData<D>,
+    {
+        let n = T::SIZE;
+        let count = if D == 3 { 48 } else { 8 };
+        match self.tiling {
+            Tiling::Periodic => Placement {
+                variant: 0,
+                shift: [0; D],
+            },
+            Tiling::Varied => Placement {
+                variant: orientation(self.seed, block, count),
+                shift: [0; D],
+            },
+            Tiling::Blended => blended_placement(&self.hash, block, n, count),
+        }
+    }
+}
+
+/// [`Tiling::Blended`]'s placement of `block`: a [`CellHash`] of the block picks the
+/// orientation (its top 10 bits) and, mixed once more, a shift along each axis (10 bits each,
+/// scaled to `0..n`). Out of line: it is off the default tiling's path, and its code would
+/// otherwise be copied into every block loop.
+#[inline(never)]
+fn blended_placement<const D: usize>(
+    hash: &CellHash,
+    block: [i32; D],
+    n: usize,
+    count: u32,
+) -> Placement<D> {
+    let h = hash.hash(block);
+    let s = mix(h);
+    Placement {
+        variant: ((h >> 22) * count) >> 10,
+        shift: core::array::from_fn(|a| (((s >> (10 * a)) as usize & 1023) * n) >> 10),
+    }
+}
+
+/// Multiplies the weights of the three coefficients of one axis (every lane's) by their blend
+/// weights in a block, the first at local index `l_plus_n − n` ([`blend_weight`]). Out of
+/// line, as it runs only in blend zones.
+#[inline(never)]
+fn blend_axis<R: Real, const L: usize>(
+    axis: &mut [[R; L]; 3],
+    l_plus_n: usize,
+    n: usize,
+    h: usize,
+) {
+    for (j, wj) in axis.iter_mut().enumerate() {
+        let b: R = blend_weight(l_plus_n + j, n, h);
+        for x in wj.iter_mut() {
+            *x = x.mul_fraction(b);
+        }
+    }
+}
+
+/// [`Wavelet::members`] from the first lane's local indices. The first block reaches local
+/// index `n + h`, so coefficient `j` (local `l0 + j`) is in it while `j < n + h − l0`; the next
+/// block starts at local `n − h` of the first, so it holds `j ≥ n − h − l0`.
+#[inline(never)]
+fn members<const D: usize>(
+    crossing: usize,
+    local0: [usize; D],
+    n: usize,
+    h: usize,
+) -> [[u8; D]; 2] {
+    let mut bits = [[0b111u8; D]; 2];
+    for (a, &l0) in local0.iter().enumerate() {
+        if crossing >> a & 1 == 1 {
+            bits[0][a] = (1u8 << (n + h - l0).min(3)) - 1;
+            bits[1][a] = 0b111 & !((1u8 << (n - h).saturating_sub(l0).min(3)) - 1);
+        }
+    }
+    bits
+}
+
+/// A 32-bit hash of a block coordinate and seed (murmur3's finaliser per component), mapped
+/// onto `0..count`: [`Tiling::Varied`]'s orientations.
+#[inline]
+fn orientation<const D: usize>(seed: u32, block: [i32; D], count: u32) -> u32 {
+    let mut h = seed ^ 0x9E37_79B9;
+    for b in block {
+        h ^= b as u32;
+        h = h.wrapping_mul(0x85EB_CA6B);
+        h ^= h >> 13;
+        h = h.wrapping_mul(0xC2B2_AE35);
+        h ^= h >> 16;
+    }
+    ((h as u64 * count as u64) >> 32) as u32
 }
 
 impl<T> Wavelet<'_, T> {
     /// [`evaluate`](Self::evaluate) for [`LANES`] points, bit-identical to it. When the lanes
-    /// agree on the blocks their coefficients touch (all lanes in the same block along each
-    /// axis, and along an axis where coefficients reach into the next block, all lanes at the
-    /// same coefficient: a row of a grid, along its constant axes), each block's orientation is
+    /// agree on the blocks their coefficients touch (all lanes in the same blocks along each
+    /// axis, and along an axis where coefficients reach a second block, all lanes at the same
+    /// coefficient: a row of a grid, along its constant axes), each block's placement is
     /// resolved once for all lanes and every lane sums its coefficients in `evaluate`'s order.
     /// Otherwise every lane takes `evaluate`.
     #[inline]
@@ -424,26 +677,28 @@ impl<T> Wavelet<'_, T> {
         T: TileData<D>,
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
-        let n = T::SIZE;
+        let (n, h) = (T::SIZE, self.half_width::<D>());
         let mut weights = [[[R::ZERO; LANES]; 3]; D];
         let mut local0 = [[0usize; LANES]; D];
         let mut block = [0i32; D];
         let mut crossing = 0usize;
         let mut uniform = true;
         for a in 0..D {
+            let mut two = [false; LANES];
             for l in 0..LANES {
                 let (first, w) = bspline3(p[a][l]);
                 for (wj, w) in weights[a].iter_mut().zip(w) {
                     wj[l] = w;
                 }
-                let b = first.div_euclid(n as i32);
-                local0[a][l] = first.rem_euclid(n as i32) as usize;
+                let (b, l0, t) = axis_span(first, n, h);
+                local0[a][l] = l0;
+                two[l] = t;
                 if l == 0 {
                     block[a] = b;
                 }
                 uniform &= b == block[a];
             }
-            if local0[a].iter().any(|&l0| l0 + 2 >= n) {
+            if two.iter().any(|&t| t) {
                 crossing |= 1 << a;
                 uniform &= local0[a].iter().all(|&l0| l0 == local0[a][0]);
             }
@@ -454,37 +709,27 @@ impl<T> Wavelet<'_, T> {
             }
             return;
         }
-        // As in `evaluate`: along axis a, coefficients j < split[a] lie in the block, the rest
-        // in the next (the same for every lane where any lane crosses).
-        let split: [usize; D] = core::array::from_fn(|a| (n - local0[a][0]).min(3));
         let mut sum = [R::ZERO; LANES];
         let mut offset = [[[0usize; LANES]; 3]; D];
-        let mut m = crossing;
-        loop {
-            let v = match self.tiling {
-                Tiling::Periodic => 0,
-                Tiling::Varied => {
-                    let mut b = block;
-                    for (a, ba) in b.iter_mut().enumerate() {
-                        *ba = ba.wrapping_add((m >> a & 1) as i32);
-                    }
-                    block_variant(self.seed, b)
-                }
-            };
-            axis_offsets(&mut offset, v, &local0, n);
-            // Coefficient j along axis a belongs to this block when it is on the block's side
-            // of the split; without crossing axes, every coefficient does (a separate
-            // instantiation, without the tests).
-            let mine = |a: usize, j: usize| (m >> a & 1 == 1) == (j >= split[a]);
-            if crossing == 0 {
-                self.add_block(&mut sum, &weights, &offset, |_, _| true);
-            } else {
+        if crossing == 0 {
+            // One block, every coefficient weighing its B-spline weight alone.
+            axis_offsets(&mut offset, &self.placement(block), 0, &local0, n);
+            self.add_block(&mut sum, &weights, &offset, every);
+        } else {
+            let sides = self.sided(&weights, crossing, &local0);
+            let members = self.members(crossing, &local0);
+            let mut m = crossing;
+            loop {
+                let place = self.placement(self.step(block, m));
+                axis_offsets(&mut offset, &place, m, &local0, n);
+                let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
+                let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
                 self.add_block(&mut sum, &weights, &offset, mine);
+                if m == 0 {
+                    break;
+                }
+                m = (m - 1) & crossing;
             }
-            if m == 0 {
-                break;
-            }
-            m = (m - 1) & crossing;
         }
         for (o, s) in out.iter_mut().zip(sum) {
             *o = s.canonical();
@@ -539,6 +784,13 @@ impl<T> Wavelet<'_, T> {
     }
 }
 
+/// Every coefficient of a block (for [`Wavelet::add_block`]; one function, so one
+/// instantiation wherever it is passed).
+#[inline]
+fn every(_axis: usize, _j: usize) -> bool {
+    true
+}
+
 crate::noise::inherent_amplitude_bound!(Wavelet<'_, T>, [T]);
 
 /// The analytic gradient: each axis's quadratic B-spline weights differentiated, `(−(1−f),
@@ -562,9 +814,10 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
         self.evaluate_lanes(p, out);
     }
 
-    /// `|Σ_c w(c) n_c| ≤ max |n_c|`: the weights are non-negative and sum to 1. Plus 2⁻¹⁰ for
-    /// rounding, as for the lattice noises.
+    /// `|Σ_c w(c) n_c| ≤ max |n_c|`: the weights are non-negative and sum to 1, and a
+    /// blended coefficient is at most `(√2·cos(π/32))^D` (1.41ᴰ) times the tile's largest.
+    /// Plus 2⁻¹⁰ for rounding, as for the lattice noises.
     fn amplitude_bound(&self) -> f32 {
-        self.tile.max_abs() * (1.0 + 1e-6) + crate::lattice::ROUNDING
+        self.coefficient_bound::<D>() * (1.0 + 1e-6) + crate::lattice::ROUNDING
     }
 }

@@ -363,7 +363,7 @@ impl<T: TileData<3>> Multiband<'_, T> {
     /// `3 · max |n_c|` per unit of normalised weight.
     #[must_use]
     pub fn projected_bound(&self) -> f32 {
-        self.bound(2, 3.0 * self.band.tile().max_abs())
+        self.bound(2, 3.0 * self.band.coefficient_bound::<3>())
     }
 }
 
@@ -408,9 +408,9 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
         self.sum(p, D - 2, |q| self.band.sample(q))
     }
 
-    /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the tile's
-    /// largest coefficient).
+    /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the largest
+    /// coefficient, blended ones included).
     fn amplitude_bound(&self) -> f32 {
-        self.bound(D - 2, self.band.tile().max_abs())
+        self.bound(D - 2, self.band.coefficient_bound::<D>())
     }
 }

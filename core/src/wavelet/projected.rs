@@ -11,7 +11,7 @@
 
 use crate::{ProjectedNoise, Real};
 
-use super::band::{TileData, Tiling, Wavelet, block_variant, orient};
+use super::band::{Placement, TileData, Wavelet, blend_weight, tile_index};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
 /// `(3 − t)²/2`, 0 elsewhere.
@@ -84,7 +84,7 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
     /// Never panics. A NaN or ±∞ coordinate is 0 and cells beyond `i32` wrap, as for
     /// [`Noise::sample`](crate::Noise::sample); the normal goes through [`unit_normal`] (any
     /// finite non-zero normal keeps its direction; zero or non-finite normals project along z).
-    /// The result is finite and at most three times the tile's largest coefficient in magnitude
+    /// The result is finite and at most three times the largest (blended) coefficient in magnitude
     /// (the basis weights sum to 2 along an axis-aligned normal and below 3 for any normal,
     /// measured by the fuzz target `wavelet`; fixed point saturates).
     ///
@@ -109,14 +109,14 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
     }
 }
 
-/// Block orientations for the up to 3 blocks per axis that a projected sample touches.
-struct Variants {
+/// Block placements for the up to 3 blocks per axis that a projected sample touches.
+struct Placements {
     base: [i32; 3],
-    cache: [[[Option<u32>; 3]; 3]; 3],
+    cache: [[[Option<Placement<3>>; 3]; 3]; 3],
 }
 
 impl<T: TileData<3>> Wavelet<'_, T> {
-    /// A bound on `|sample_projected|`: three times the tile's largest coefficient (the
+    /// A bound on `|sample_projected|`: three times the largest (blended) coefficient (the
     /// projected basis weights sum to 2 along an axis-aligned normal and stay below 3 for any
     /// normal, measured by the fuzz target `wavelet`), plus rounding.
     #[must_use]
@@ -145,8 +145,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             kmin[a] = if lo_frac == R::ZERO { lo } else { lo + 1 };
             kmax[a] = (frac[a] + s).split().0;
         }
-        let mut variants = Variants {
-            base: core::array::from_fn(|a| cell[a].wrapping_add(kmin[a]).div_euclid(n)),
+        // Block q reaches coefficients [qn − h, qn + n + h): the first coefficient's blocks
+        // start one before that of c + h.
+        let h = self.half_width::<3>() as i32;
+        let mut placements = Placements {
+            base: core::array::from_fn(|a| {
+                let c = cell[a].wrapping_add(kmin[a]).wrapping_add(h);
+                c.div_euclid(n).wrapping_sub(1)
+            }),
             cache: [[[None; 3]; 3]; 3],
         };
         let mut sum = R::ZERO;
@@ -168,26 +174,63 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
                     // Saturating: the weights sum to less than 3, so a tile whose
                     // coefficients exceed a third of fixed point's range could overflow.
-                    sum = sum.saturating_add(weight.mul_rn(self.fetch(g, &mut variants)));
+                    sum = sum.saturating_add(weight.mul_rn(self.fetch(g, &mut placements)));
                 }
             }
         }
         sum.canonical()
     }
 
-    /// The coefficient at global index `g`, in its block's orientation.
+    /// The coefficient at global index `g`: `Σ ω_b t_b(g)` over the (up to 8) blocks `b` that
+    /// reach it, each read in its placement and weighted by its blend weights.
     #[inline]
-    fn fetch<R: Real>(&self, g: [i32; 3], variants: &mut Variants) -> R {
-        let n = T::SIZE as i32;
-        let local: [usize; 3] = core::array::from_fn(|a| g[a].rem_euclid(n) as usize);
-        if self.tiling() == Tiling::Periodic {
-            return self.tile().get(local);
+    fn fetch<R: Real>(&self, g: [i32; 3], placements: &mut Placements) -> R {
+        let n = T::SIZE;
+        let h = self.half_width::<3>();
+        // Along each axis: the first block reaching g, g's local index in it plus n, and the
+        // number of blocks (2 in a blend zone).
+        let mut first = [0i32; 3];
+        let mut local = [0usize; 3];
+        let mut count = [1usize; 3];
+        for a in 0..3 {
+            let u = g[a].wrapping_add(h as i32);
+            let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
+            if r < 2 * h {
+                (first[a], local[a], count[a]) = (q.wrapping_sub(1), r + 2 * n - h, 2);
+            } else {
+                (first[a], local[a]) = (q, r + n - h);
+            }
         }
-        let block: [i32; 3] = core::array::from_fn(|a| g[a].div_euclid(n));
-        let slot: [usize; 3] =
-            core::array::from_fn(|a| block[a].wrapping_sub(variants.base[a]).clamp(0, 2) as usize);
-        let v = *variants.cache[slot[2]][slot[1]][slot[0]]
-            .get_or_insert_with(|| block_variant(self.seed(), block));
-        self.tile().get(orient(local, v, T::SIZE))
+        let mut value = R::ZERO;
+        for mz in 0..count[2] {
+            for my in 0..count[1] {
+                for mx in 0..count[0] {
+                    let m = [mx, my, mz];
+                    let block: [i32; 3] =
+                        core::array::from_fn(|a| first[a].wrapping_add(m[a] as i32));
+                    let slot: [usize; 3] = core::array::from_fn(|a| {
+                        block[a].wrapping_sub(placements.base[a]).clamp(0, 2) as usize
+                    });
+                    let place = *placements.cache[slot[2]][slot[1]][slot[0]]
+                        .get_or_insert_with(|| self.placement(block));
+                    let l: [usize; 3] = core::array::from_fn(|a| local[a] - m[a] * n);
+                    let mut c: R = self.tile().flat(tile_index(l, &place, n));
+                    for a in 0..3 {
+                        if count[a] == 2 {
+                            c = blended(c, l[a], n, h);
+                        }
+                    }
+                    value = value.saturating_add(c);
+                }
+            }
+        }
+        value
     }
+}
+
+/// `c` times its blend weight at local index `l_plus_n − n` ([`blend_weight`]). Out of line:
+/// only blend zones call it.
+#[inline(never)]
+fn blended<R: Real>(c: R, l_plus_n: usize, n: usize, h: usize) -> R {
+    c.mul_fraction(blend_weight(l_plus_n, n, h))
 }

@@ -18,7 +18,7 @@ use bandnoise::lattice::{
 };
 use bandnoise::levels::Levels;
 use bandnoise::wavelet::{
-    Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Wavelet, erf, unit_normal,
+    Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
 };
 use bandnoise::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
 use cortex_m as _;
@@ -55,14 +55,19 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         add(f.sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[2]]));
         add(f.sample_with_gradient([p[0], p[1], p[2]]).1[2]);
     }
-    add(Wavelet::new(4, &TILE2_I16).sample([p[0], p[1]]));
-    let w3 = Wavelet::new(4, &TILE3_I16);
+    // Every tiling: the optimiser cannot tell which.
+    let tiling = black_box(Tiling::Blended);
+    add(Wavelet::new(4, &TILE2_I16)
+        .with_tiling(tiling)
+        .sample([p[0], p[1]]));
+    let w3 = Wavelet::new(4, &TILE3_I16).with_tiling(tiling);
     add(w3.sample([p[0], p[1], p[2]]));
     add(w3.sample_projected([p[0], p[1], p[2]], [p[3], p[2], p[1]]));
     add(w3.sample_with_gradient([p[0], p[1], p[2]]).1[1]);
     add(ValueNoise::new(2).sample_with_gradient([p[0], p[3]]).1[0]);
     if let Ok(b) = Bands::new(black_box(-2), black_box(&[0.5f32, 1.0, 0.25][..])) {
-        let m = Multiband::new(5, &TILE3_I16, b, black_box(Distribution::Uniform));
+        let m =
+            Multiband::new(5, &TILE3_I16, b, black_box(Distribution::Uniform)).with_tiling(tiling);
         add(m.sample([p[0], p[1], p[2]]));
         add(m.sample_projected([p[0], p[1], p[2]], [p[1], p[0], p[3]]));
         add(m.sample_with_gradient([p[0], p[1], p[2]]).1[0]);
