@@ -292,6 +292,33 @@ pub fn bin_frequency(k: usize, side: usize, spacing: f64) -> f64 {
     k / (side as f64 * spacing)
 }
 
+/// The fraction of a square grid's power (side a power of two, the mean excluded) in the
+/// frequency bins `(x, y)` that `select` picks. `hann` as in [`power_spectrum`].
+pub fn power_fraction(
+    grid: &[f64],
+    side: usize,
+    hann: bool,
+    select: impl Fn(usize, usize) -> bool,
+) -> f64 {
+    let mean = grid.iter().sum::<f64>() / grid.len() as f64;
+    let centred: Vec<f64> = grid.iter().map(|v| v - mean).collect();
+    let power = power_spectrum(&centred, side, hann);
+    let (mut picked, mut total) = (0.0, 0.0);
+    for y in 0..side {
+        for x in 0..side {
+            if x == 0 && y == 0 {
+                continue;
+            }
+            let p = power[y * side + x];
+            total += p;
+            if select(x, y) {
+                picked += p;
+            }
+        }
+    }
+    picked / total
+}
+
 /// The fraction of a square grid's power (samples `spacing` units apart, side a power of two,
 /// the mean excluded) below `cutoff` cycles per unit radially. `hann` as in [`power_spectrum`].
 pub fn low_frequency_fraction_windowed(
@@ -301,27 +328,13 @@ pub fn low_frequency_fraction_windowed(
     cutoff: f64,
     hann: bool,
 ) -> f64 {
-    let mean = grid.iter().sum::<f64>() / grid.len() as f64;
-    let centred: Vec<f64> = grid.iter().map(|v| v - mean).collect();
-    let power = power_spectrum(&centred, side, hann);
-    let (mut low, mut total) = (0.0, 0.0);
-    for y in 0..side {
-        for x in 0..side {
-            if x == 0 && y == 0 {
-                continue;
-            }
-            let p = power[y * side + x];
-            total += p;
-            let (fx, fy) = (
-                bin_frequency(x, side, spacing),
-                bin_frequency(y, side, spacing),
-            );
-            if fx.hypot(fy) < cutoff {
-                low += p;
-            }
-        }
-    }
-    low / total
+    power_fraction(grid, side, hann, |x, y| {
+        let (fx, fy) = (
+            bin_frequency(x, side, spacing),
+            bin_frequency(y, side, spacing),
+        );
+        fx.hypot(fy) < cutoff
+    })
 }
 
 /// Radially binned power of a square grid of samples (side a power of two), `spacing` units

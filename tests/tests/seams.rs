@@ -19,7 +19,7 @@
 
 use bandnoise::prelude::*;
 use bandnoise::wavelet::*;
-use bandnoise_tests::{Rng, correlation, low_frequency_fraction_windowed, power_spectrum};
+use bandnoise_tests::{Rng, correlation, low_frequency_fraction_windowed, power_fraction};
 
 /// Where a block border lies in sample coordinates: coefficient `c`'s basis is centred on `c`,
 /// so the border between coefficients `bn − 1` and `bn` is at `bn − ½`.
@@ -43,27 +43,13 @@ fn leak(f: impl Fn(f64, f64) -> f64) -> f64 {
     low_frequency_fraction_windowed(&grid(side, 0.5, f), side, 0.5, 0.125, true)
 }
 
+/// The fraction of a band's power at the 64² tile's harmonics (both frequencies multiples of
+/// 1/64 cycle per coefficient), over 1024² samples one coefficient apart.
 fn harmonics2(band: &Wavelet<'_, Tile2<64>>) -> f64 {
     let side = 1024;
     let g = grid(side, 1.0, |x, y| band.sample([x, y]));
-    let mean = g.iter().sum::<f64>() / g.len() as f64;
-    let g: Vec<f64> = g.iter().map(|v| v - mean).collect();
-    let power = power_spectrum(&g, side, false);
     let step = side / 64;
-    let (mut at, mut total) = (0.0, 0.0);
-    for y in 0..side {
-        for x in 0..side {
-            if x == 0 && y == 0 {
-                continue;
-            }
-            let p = power[y * side + x];
-            total += p;
-            if x % step == 0 && y % step == 0 {
-                at += p;
-            }
-        }
-    }
-    at / total
+    power_fraction(&g, side, false, |x, y| x % step == 0 && y % step == 0)
 }
 
 /// The worst relative deviation of the variance in the strips at offsets −5 … 5 from a

@@ -454,7 +454,7 @@ impl<'t, T> Wavelet<'t, T> {
             // block; a second copy of the 27-coefficient sum would cost the demo 3 KB.)
             axis_offsets(&mut off, &self.placement(block), 0, &local0, n);
             for (sum, weights) in sums.iter_mut().zip(sets) {
-                self.add_block(sum, weights, &off, every);
+                self.add_block(sum, &weights.each_ref(), &off, every);
             }
             return sums.map(|[s]| s);
         }
@@ -462,14 +462,18 @@ impl<'t, T> Wavelet<'t, T> {
         // block's blend weights (0 beyond its reach; with abutting blocks, 1 or 0): the
         // summing is `add_block` with one lane, so the batch path shares it.
         let sided: [_; K] = core::array::from_fn(|k| self.sided(&sets[k], crossing, &local0));
-        let members = self.members(crossing, &local0);
+        let members = if crossing == 0 {
+            [[0b111; D]; 2] // one block (3D): every coefficient
+        } else {
+            self.members(crossing, &local0)
+        };
         // Every subset of the crossing axes, largest first.
         for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
             let place = self.placement(self.step(block, m));
             axis_offsets(&mut off, &place, m, &local0, n);
             let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
             for (sum, sides) in sums.iter_mut().zip(&sided) {
-                let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
+                let weights = core::array::from_fn(|a| &sides[m >> a & 1][a]);
                 self.add_block(sum, &weights, &off, mine);
             }
         }
@@ -714,7 +718,7 @@ impl<T> Wavelet<'_, T> {
         if crossing == 0 {
             // One block, every coefficient weighing its B-spline weight alone.
             axis_offsets(&mut offset, &self.placement(block), 0, &local0, n);
-            self.add_block(&mut sum, &weights, &offset, every);
+            self.add_block(&mut sum, &weights.each_ref(), &offset, every);
         } else {
             let sides = self.sided(&weights, crossing, &local0);
             let members = self.members(crossing, &local0);
@@ -723,7 +727,7 @@ impl<T> Wavelet<'_, T> {
                 let place = self.placement(self.step(block, m));
                 axis_offsets(&mut offset, &place, m, &local0, n);
                 let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
-                let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
+                let weights = core::array::from_fn(|a| &sides[m >> a & 1][a]);
                 self.add_block(&mut sum, &weights, &offset, mine);
                 if m == 0 {
                     break;
@@ -745,7 +749,7 @@ impl<T> Wavelet<'_, T> {
     fn add_block<R: Real, const D: usize, const L: usize>(
         &self,
         sum: &mut [R; L],
-        weights: &[[[R; L]; 3]; D],
+        weights: &[&[[R; L]; 3]; D],
         offset: &[[[usize; L]; 3]; D],
         mine: impl Fn(usize, usize) -> bool,
     ) where
