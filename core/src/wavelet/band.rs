@@ -720,19 +720,21 @@ impl<T> Wavelet<'_, T> {
             axis_offsets(&mut offset, &self.placement(block), 0, &local0, n);
             self.add_block(&mut sum, &weights.each_ref(), &offset, every);
         } else {
-            let sides = self.sided(&weights, crossing, &local0);
+            // As in `block_sums`, but without copying 16 lanes of weights where blocks abut.
+            let blended;
+            let sides: [[&[[R; LANES]; 3]; D]; 2] = if h > 0 {
+                blended = self.sided(&weights, crossing, &local0);
+                blended.each_ref().map(|side| side.each_ref())
+            } else {
+                [weights.each_ref(); 2]
+            };
             let members = self.members(crossing, &local0);
-            let mut m = crossing;
-            loop {
+            for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
                 let place = self.placement(self.step(block, m));
                 axis_offsets(&mut offset, &place, m, &local0, n);
                 let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
-                let weights = core::array::from_fn(|a| &sides[m >> a & 1][a]);
+                let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
                 self.add_block(&mut sum, &weights, &offset, mine);
-                if m == 0 {
-                    break;
-                }
-                m = (m - 1) & crossing;
             }
         }
         for (o, s) in out.iter_mut().zip(sum) {
