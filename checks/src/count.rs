@@ -19,14 +19,14 @@ pub const NAMES: [&str; 9] = [
     "perlin 2D f32",
     "perlin 3D I16F16",
     "perlin 3D f32",
-    "wavelet 2D I16F16",
-    "wavelet 2D f32",
+    "wavelet 2D I16F16 varied",
+    "wavelet 2D f32 varied",
 ];
 
 /// The workloads of [`run_outputs`], in its order: 8-bit outputs, the LED example, and a 2D
-/// wavelet band in its varied and blended tilings at points spread over its whole 64² tile
-/// ([`tile_point`]; [`run`]'s points stay in one block), with their own baseline (the loop, the point and
-/// an integer sum). A program of their own (the firmware's `count-outputs`), so that they do
+/// wavelet band with [`Tiling::Varied`] and with the default tiling at points spread over its
+/// whole 64² tile ([`tile_point`]; [`run`]'s points stay in one block), with their own baseline
+/// (the loop, the point and an integer sum). A program of their own (the firmware's `count-outputs`), so that they do
 /// not change how the optimiser inlines [`run`]'s noises.
 pub const OUTPUT_NAMES: [&str; 7] = [
     "baseline u8",
@@ -34,8 +34,8 @@ pub const OUTPUT_NAMES: [&str; 7] = [
     "mnoise 2D I16F16 u8",
     "perlin 2D f32 u8",
     "led frame",
+    "wavelet 2D I16F16 varied spread",
     "wavelet 2D I16F16 spread",
-    "wavelet 2D I16F16 blended",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -88,7 +88,10 @@ fn bits<R: Real>(v: R) -> u32 {
 /// of the firmware, which the trace recognises by name).
 pub fn run(begin: fn(), end: fn()) -> u32 {
     let (m, p) = (MNoise::<61>::new(1), Perlin::new(1));
-    let w = Wavelet::new(1, &TILE2_I16);
+    // Varied: issue 16's goal was set for it when it was the default. [`run`]'s points all lie
+    // in one block's interior, where `Varied` sums a single block; the default tiling's
+    // cost is measured over a whole tile by [`run_outputs`].
+    let w = Wavelet::new(1, &TILE2_I16).with_tiling(Tiling::Varied);
     let mut acc = workload::<I16F16, 2>(begin, end, |q| bits(q[0] + q[1]));
     acc ^= workload::<I16F16, 2>(begin, end, |q| bits(m.sample(q)));
     acc ^= workload::<f32, 2>(begin, end, |q| bits(m.sample(q)));
@@ -120,10 +123,10 @@ pub fn run_outputs(begin: fn(), end: fn()) -> u32 {
         acc = acc.wrapping_add(u32::from(strip[t as usize % crate::led::LEDS][1]));
     }
     end();
-    // Over the whole 64² tile, both tilings.
+    // Over the whole 64² tile: `Varied`, and the default as a user gets it.
     let w = Wavelet::new(1, &TILE2_I16);
-    let b = w.with_tiling(Tiling::Blended);
+    let v = w.with_tiling(Tiling::Varied);
+    acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(v.sample(q)));
     acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(w.sample(q)));
-    acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(b.sample(q)));
     acc
 }

@@ -151,10 +151,10 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             .with_period(period)
             .unwrap_or(Spec::new(base, seed))
     };
-    let blended = |base| {
+    let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
-            .with_tiling(Tiling::Blended)
+            .with_tiling(Tiling::Varied)
             .unwrap_or(Spec::new(base, 3))
     };
     [
@@ -171,8 +171,8 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             100,
         ),
         ("multiband uniform 3D", uniform_multiband(), 3, 100),
-        ("blended wavelet 2D", blended(Base::Wavelet), 2, 200),
-        ("blended multiband 3D", blended(Base::Multiband), 3, 100),
+        ("varied wavelet 2D", varied(Base::Wavelet), 2, 200),
+        ("varied multiband 3D", varied(Base::Multiband), 3, 100),
         (
             "periodic perlin 3D",
             periodic(Base::Perlin, 4, &[5, 256, 1000]),
@@ -192,7 +192,7 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 /// generator, and [`TabledPerlin`] (Perlin's values through its table).
 const OTHER: [&str; 5] = [
     "multiband projected",
-    "blended multiband projected",
+    "varied multiband projected",
     "cell hash and generator",
     "tabled perlin 2D",
     "tabled perlin 3D",
@@ -215,7 +215,7 @@ fn all<R: Bits>(out: &mut [u32]) {
         push(spec_checksum::<R>(&spec, dims, range));
     }
     let spec = uniform_multiband();
-    for tiling in [Tiling::Varied, Tiling::Blended] {
+    for tiling in [Tiling::default(), Tiling::Varied] {
         let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution())
             .with_tiling(tiling);
         let mut f = Fnv::new();

@@ -25,7 +25,7 @@
 //! |---|---|---|
 //! | `seed=` | `0..=4294967295` | 0 |
 //! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice noises) | not periodic |
-//! | `tiling=` | `varied`, `blended` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `varied` |
+//! | `tiling=` | `blended`, `varied` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `blended` |
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
 //! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
@@ -192,7 +192,7 @@ impl Spec {
             seed,
             period: [0; 4],
             axes: 0,
-            tiling: Tiling::Varied,
+            tiling: Tiling::Blended,
             bands: DEFAULT_BANDS,
             distribution: Distribution::Gaussian,
             fractal: None,

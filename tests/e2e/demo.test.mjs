@@ -106,7 +106,7 @@ await test('each wavelet tiling gives a different image', async () => {
     await page.screenshot({ path: `${artifacts}/demo-wavelet-${tiling}.png` });
   }
   assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
-  await set('tiling', 'varied');
+  await set('tiling', 'blended');
   await set('zoom', '32');
 });
 

@@ -233,7 +233,7 @@ fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
     assert_eq!(
         default.to_string(),
         "multiband seed=1 first=0 bands=1,0.5,0.25,0.125,0.0625 distribution=gaussian \
-         tiling=varied"
+         tiling=blended"
     );
     // No bands is the zero noise, and round-trips.
     let none = default

@@ -39,7 +39,7 @@ const ARGS: Args = Args {
     fractal: "none",
     octaves: 6.0,
     bands: &BANDS,
-    tiling: "varied",
+    tiling: "blended",
     projected: false,
 };
 
@@ -144,7 +144,7 @@ fn periodic_fractal_and_projected_noise_render() {
         },
         Args {
             kind: "multiband",
-            tiling: "blended",
+            tiling: "varied",
             ..ARGS
         },
         Args {

@@ -7,14 +7,14 @@
 //! **Seams.** A tile repeats over tile-sized blocks of the coefficient grid; [`Tiling`] says how.
 //!
 //! * [`Tiling::Periodic`] repeats it unchanged: band-limited, seamless, and periodic.
-//! * [`Tiling::Varied`] (the default) reads the tile in one of its 48 orientations (6 axis
+//! * [`Tiling::Varied`] reads the tile in one of its 48 orientations (6 axis
 //!   permutations × 8 reflections; 8 in 2D) per block, chosen by a hash of the block and the
 //!   seed. A coefficient's value depends only on its global index, so `N` stays a quadratic
 //!   B-spline of one coefficient grid, continuous with a continuous gradient. But the blocks
 //!   abut: their coefficients are unrelated across a border, which leaks power below the band,
 //!   and a border between two orientations that are mirror images of each other along it shows
 //!   as a symmetric streak.
-//! * [`Tiling::Blended`] is §4.3's tile meshing made seamless. Each block reads the tile in a
+//! * [`Tiling::Blended`] (the default) is §4.3's tile meshing made seamless. Each block reads the tile in a
 //!   hashed orientation *and* cyclically shifted by a hashed amount per axis (so no two blocks'
 //!   borders line up with the tile's content), and reaches 4 coefficients past each of its
 //!   borders. Where two blocks overlap (a zone 8 coefficients wide around every border), a
@@ -97,23 +97,24 @@ impl<const N: usize> TileData<3> for Tile3<N> {
 /// | variance near a block border against the interior, 2D / 3D | within ±2.3% / ±1.4% | up to +63% / +23% | — |
 /// | worst mirror correlation across a 2D border | 0.24 | 1.00 | — |
 ///
-/// `Blended`'s zones cost time: a sample within 4 coefficients of a border sums two blocks per axis
-/// (four at a 2D corner), about 1.5× `Varied`'s instructions on average over a 64² tile on a
-/// Cortex-M0 (`bench/README.md`), which is why `Varied` is still the default.
+/// `Blended`, the default, is the only tiling without repetition or seams. Its zones cost time:
+/// a sample within 4 coefficients of a border sums two blocks per axis (four at a 2D corner),
+/// about 1.5× `Varied`'s instructions on average over a 64² tile on a Cortex-M0 and more on
+/// x86-64 (`bench/README.md`). `Varied` is the faster choice where its borders do not matter.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum Tiling {
     /// The tile repeats unchanged: the noise is periodic with the tile's size in coefficients.
     Periodic,
     /// Each tile-sized block uses one of the tile's 48 orientations (8 in 2D), chosen by a hash
     /// of the block and the seed (§4.3): continuous, but the blocks abut, so their borders
-    /// show (see the module docs for what they cost).
-    #[default]
+    /// show (see the module docs for what they cost). Spec text `tiling=varied`.
     Varied,
     /// Each block reads the tile cyclically shifted and in one of its orientations, both
     /// hashed, and neighbouring blocks blend their coefficients over 8 coefficients around
     /// each border with weights whose squares sum to 1 (§4.3's tile meshing): no repetition,
     /// no seams, and the band limit kept (figures in the module docs). Slower than `Varied`
-    /// near block borders. Spec text `tiling=blended`.
+    /// near block borders. The default; spec text `tiling=blended`.
+    #[default]
     Blended,
 }
 
@@ -160,15 +161,15 @@ impl<T: PartialEq> PartialEq for Wavelet<'_, T> {
 }
 
 impl<'t, T> Wavelet<'t, T> {
-    /// A band over `tile`, with hashed orientations ([`Tiling::Varied`]) chosen by `seed`
-    /// (the seed first, as in every noise's constructor).
+    /// A band over `tile`, with blocks placed and blended ([`Tiling::Blended`], the default)
+    /// as `seed` chooses (the seed first, as in every noise's constructor).
     #[must_use]
     pub const fn new(seed: u32, tile: &'t T) -> Self {
         Self {
             tile,
             seed,
             hash: CellHash::new(seed),
-            tiling: Tiling::Varied,
+            tiling: Tiling::Blended,
         }
     }
 

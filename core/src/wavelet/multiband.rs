@@ -8,9 +8,12 @@
 //! one figure per kind; bandnoise uses each tile's exact band variance, computed when the tile
 //! is generated ([`Tile3::variance`](super::Tile3::variance)), so the variance is 1 for every
 //! tile and not only on average (a single 64² tile's variance is up to 8% off the average).
-//! Projected bands use that variance times the measured ratio 1.50. The averages over many
-//! tiles, against the paper: 2D [`VARIANCE_2D`] (0.265, +2%), projected
-//! [`VARIANCE_PROJECTED`] (0.296, −1%), 3D [`VARIANCE_3D`] (0.210, −7%). The paper's 3D
+//! A projected band's variance is that variance times a ratio that depends on the normal
+//! (1.483 to 1.561, [`projected_gain`](super::projected_gain)), computed from the tile filters;
+//! projected sums are multiplied by the normal's gain, so their variance is 1 for every normal,
+//! not only on average. The averages over many tiles, against the paper: 2D [`VARIANCE_2D`]
+//! (0.265, +2%), projected [`VARIANCE_PROJECTED`] (0.296, −1%), 3D [`VARIANCE_3D`] (0.210,
+//! −7%). The paper's 3D
 //! figure is that of its printed generator taken literally: `if (n/2) n++` (erratum 1) turns a
 //! requested 64³ tile into an odd 65³ one, whose coarse part is not fully removed, and a
 //! transcription of that code gives 0.209–0.211; the same transcription with an even tile gives
@@ -22,6 +25,7 @@ use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet};
 use super::erf::erf_with_derivative;
+use super::projected::GAIN_MAX;
 
 /// Average variance of one 2D band over many tiles (measured: 24 tiles of 64²; the paper gives
 /// 0.265).
@@ -186,7 +190,8 @@ pub struct Multiband<'t, T> {
     bands: Bands,
     distribution: Distribution,
     /// Each band's weight divided by `sqrt(σ² Σ w²)`, for 2D (index 0), 3D (1) and projected
-    /// (2) bands.
+    /// (2) bands. Projected sums are also multiplied by the normal's
+    /// [`projected_gain`](super::projected_gain).
     scaled: Vec<[f32; 3], MAX_BANDS>,
 }
 
@@ -243,9 +248,10 @@ impl<'t, T> Multiband<'t, T> {
                 r * r
             })
             .sum();
-        // The tile's own exact band variance; projection scales it by the measured ratio.
+        // The tile's own exact band variance. Projected bands have that of the sampled band
+        // times a ratio that depends on the normal: each sample multiplies by its
+        // `projected_gain` (so index 2 is index 1, kept apart for the bounds).
         let var = tile.band_variance() as f64;
-        let projected = var * (VARIANCE_PROJECTED / VARIANCE_3D) as f64;
         let mut scaled = Vec::new();
         for &w in bands.weights() {
             let s = |var: f64| {
@@ -256,7 +262,7 @@ impl<'t, T> Multiband<'t, T> {
                 }
             };
             // Cannot fail: as many entries as bands.
-            let _ = scaled.push([s(var), s(var), s(projected)]);
+            let _ = scaled.push([s(var), s(var), s(var)]);
         }
         Self {
             band: Wavelet::new(seed, tile),
@@ -291,19 +297,28 @@ impl<'t, T> Multiband<'t, T> {
     /// that the scaling overflows) is 0 before the band's offset is added: each band samples
     /// `offset_b`, as the [`Noise`] contract's "NaN and ±∞ are 0" asks. (An overflowing float
     /// is a multiple of 2³² anyway, whose cell wraps to 0.)
-    fn sum<R: Real, const D: usize>(&self, p: [R; D], which: usize, f: impl Fn([R; D]) -> R) -> R {
-        self.sum_with_gradient(p, which, |q| (f(q), [R::ZERO; D])).0
+    fn sum<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        which: usize,
+        gain: Option<R>,
+        f: impl Fn([R; D]) -> R,
+    ) -> R {
+        self.sum_with_gradient(p, which, gain, |q| (f(q), [R::ZERO; D]))
+            .0
     }
 
     /// [`sum`](Self::sum) and its gradient, from each band's value and gradient `f(q)`: band
     /// `b` samples at `2^(b+1)·p + offset_b`, so its gradient counts `2^(b+1)` times; the
     /// uniform distribution multiplies by the derivative of its `erf`. The value is `sum`'s,
-    /// bit for bit (`sum` is this with the gradients unused).
+    /// bit for bit (`sum` is this with the gradients unused). `gain`, if any, multiplies every
+    /// band's weight (a projected sum's [`projected_gain`](super::projected_gain)).
     #[inline]
     fn sum_with_gradient<R: Real, const D: usize>(
         &self,
         p: [R; D],
         which: usize,
+        gain: Option<R>,
         f: impl Fn([R; D]) -> (R, [R; D]),
     ) -> (R, [R; D]) {
         let mut sum = R::ZERO;
@@ -324,7 +339,10 @@ impl<'t, T> Multiband<'t, T> {
                     .finite_or_zero()
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
-            let weight = R::from_f32(w[which]);
+            let mut weight = R::from_f32(w[which]);
+            if let Some(gain) = gain {
+                weight = weight.mul_rn(gain);
+            }
             let (v, g) = f(q);
             sum = sum.saturating_add(weight.mul_rn(v));
             for (ga, gb) in gradient.iter_mut().zip(g) {
@@ -359,18 +377,20 @@ impl<'t, T> Multiband<'t, T> {
 
 impl<T: TileData<3>> Multiband<'_, T> {
     /// A bound on `|sample_projected|`. The projected basis weights sum to 2 for an axis-aligned
-    /// normal and stay below 3 for any normal (measured in `tests/tests/wavelet.rs`), so this is
-    /// `3 · max |n_c|` per unit of normalised weight.
+    /// normal and stay below 3 for any normal (measured in `tests/tests/wavelet.rs`), and the
+    /// normal's [`projected_gain`](super::projected_gain) is at most 0.822, so this is
+    /// `3 · 0.822 · max |n_c|` per unit of normalised weight.
     #[must_use]
     pub fn projected_bound(&self) -> f32 {
-        self.bound(2, 3.0 * self.band.coefficient_bound::<3>())
+        self.bound(2, 3.0 * GAIN_MAX * self.band.coefficient_bound::<3>())
     }
 }
 
 impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
     /// Multiband noise projected onto the surface through `p` with normal `normal` (§3.7): each
     /// band is [`Wavelet::sample_projected`](ProjectedNoise::sample_projected), normalised with
-    /// the tile's variance times the projected-to-3D ratio.
+    /// the tile's variance and the normal's [`projected_gain`](super::projected_gain), so the
+    /// variance is 1 whatever the normal.
     ///
     /// # Contract
     ///
@@ -381,7 +401,8 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
     #[inline]
     fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R {
         let n = super::projected::unit_normal(normal);
-        self.sum(p, 2, |q| self.band.sample_projected_unit(q, n))
+        let gain = super::projected::gain_unit(n);
+        self.sum(p, 2, Some(gain), |q| self.band.sample_projected_unit(q, n))
     }
 
     fn projected_bound(&self) -> f32 {
@@ -396,7 +417,7 @@ crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
 impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-        self.sum_with_gradient(p, D - 2, |q| {
+        self.sum_with_gradient(p, D - 2, None, |q| {
             crate::NoiseGradient::<R, D>::sample_with_gradient(&self.band, q)
         })
     }
@@ -405,7 +426,7 @@ impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Mul
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
-        self.sum(p, D - 2, |q| self.band.sample(q))
+        self.sum(p, D - 2, None, |q| self.band.sample(q))
     }
 
     /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the largest
