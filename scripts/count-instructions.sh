@@ -36,9 +36,9 @@ run riscv32imc-unknown-none-elf qemu-system-riscv32 -machine virt \
     -cpu rv32,a=false,f=false,d=false,zawrs=false,zfa=false -bios none -nographic
 
 echo "instructions per sample (QEMU trace, $samples samples, baseline subtracted)"
-printf '%-20s %16s %16s %16s\n' "" "Cortex-M0" "Cortex-M4F" "RV32IMC"
+printf '%-32s %16s %16s %16s\n' "" "Cortex-M0" "Cortex-M4F" "RV32IMC"
 paste "$work/thumbv6m-none-eabi.tsv" "$work/thumbv7em-none-eabihf.tsv" "$work/riscv32imc-unknown-none-elf.tsv" |
-    awk -F'\t' '{ printf "%-20s %16s %16s %16s\n", $1, $2, $4, $6 }'
+    awk -F'\t' '{ printf "%-32s %16s %16s %16s\n", $1, $2, $4, $6 }'
 python3 - "$work/thumbv6m-none-eabi.tsv" <<'PY'
 import sys
 rows = dict(line.rstrip("\n").split("\t") for line in open(sys.argv[1]))

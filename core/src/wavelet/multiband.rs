@@ -297,28 +297,19 @@ impl<'t, T> Multiband<'t, T> {
     /// that the scaling overflows) is 0 before the band's offset is added: each band samples
     /// `offset_b`, as the [`Noise`] contract's "NaN and ±∞ are 0" asks. (An overflowing float
     /// is a multiple of 2³² anyway, whose cell wraps to 0.)
-    fn sum<R: Real, const D: usize>(
-        &self,
-        p: [R; D],
-        which: usize,
-        gain: Option<R>,
-        f: impl Fn([R; D]) -> R,
-    ) -> R {
-        self.sum_with_gradient(p, which, gain, |q| (f(q), [R::ZERO; D]))
-            .0
+    fn sum<R: Real, const D: usize>(&self, p: [R; D], which: usize, f: impl Fn([R; D]) -> R) -> R {
+        self.sum_with_gradient(p, which, |q| (f(q), [R::ZERO; D])).0
     }
 
     /// [`sum`](Self::sum) and its gradient, from each band's value and gradient `f(q)`: band
     /// `b` samples at `2^(b+1)·p + offset_b`, so its gradient counts `2^(b+1)` times; the
     /// uniform distribution multiplies by the derivative of its `erf`. The value is `sum`'s,
-    /// bit for bit (`sum` is this with the gradients unused). `gain`, if any, multiplies every
-    /// band's weight (a projected sum's [`projected_gain`](super::projected_gain)).
+    /// bit for bit (`sum` is this with the gradients unused).
     #[inline]
     fn sum_with_gradient<R: Real, const D: usize>(
         &self,
         p: [R; D],
         which: usize,
-        gain: Option<R>,
         f: impl Fn([R; D]) -> (R, [R; D]),
     ) -> (R, [R; D]) {
         let mut sum = R::ZERO;
@@ -339,10 +330,7 @@ impl<'t, T> Multiband<'t, T> {
                     .finite_or_zero()
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
-            let mut weight = R::from_f32(w[which]);
-            if let Some(gain) = gain {
-                weight = weight.mul_rn(gain);
-            }
+            let weight = R::from_f32(w[which]);
             let (v, g) = f(q);
             sum = sum.saturating_add(weight.mul_rn(v));
             for (ga, gb) in gradient.iter_mut().zip(g) {
@@ -401,8 +389,9 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
     #[inline]
     fn sample_projected(&self, p: [R; 3], normal: [R; 3]) -> R {
         let n = super::projected::unit_normal(normal);
+        // Each band times the normal's gain, so the sum's variance is 1 for this normal.
         let gain = super::projected::gain_unit(n);
-        self.sum(p, 2, Some(gain), |q| self.band.sample_projected_unit(q, n))
+        self.sum(p, 2, |q| self.band.sample_projected_unit(q, n).mul_rn(gain))
     }
 
     fn projected_bound(&self) -> f32 {
@@ -417,7 +406,7 @@ crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
 impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-        self.sum_with_gradient(p, D - 2, None, |q| {
+        self.sum_with_gradient(p, D - 2, |q| {
             crate::NoiseGradient::<R, D>::sample_with_gradient(&self.band, q)
         })
     }
@@ -426,7 +415,7 @@ impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Mul
 impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
-        self.sum(p, D - 2, None, |q| self.band.sample(q))
+        self.sum(p, D - 2, |q| self.band.sample(q))
     }
 
     /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the largest

@@ -75,8 +75,9 @@ pub fn unit_normal<R: Real>(n: [R; 3]) -> [R; 3] {
 /// [`projected_gain`]'s polynomial: `g = c₀ + c₁ s + c₂ p + c₃ s²` in the cube-symmetric
 /// invariants `s = n_x⁴ + n_y⁴ + n_z⁴` and `p = n_x² n_y² n_z²` of the unit normal, fitted
 /// (least squares over 3000 random normals) to the exact `1/√ρ(n)` that
-/// `tests/tests/projected_variance.rs` computes from the tile filters; within 2.4e-5 of it.
-const GAIN: [f32; 4] = [0.837_087_5, -0.042_376_734, -0.064_839_84, 0.005_704_486];
+/// `tests/tests/projected_variance.rs` computes from the tile filters, in units of 2⁻¹⁶ (the
+/// same dyadic constants in every number type); within 2.0e-5 of it.
+const GAIN: [i32; 4] = [54859, -2777, -4249, 374];
 
 /// The largest [`projected_gain`] over all normals (0.8212 along the cube's diagonals), rounded
 /// up: the projected bounds use it.
@@ -92,7 +93,7 @@ pub(crate) const GAIN_MAX: f32 = 0.822;
 /// one constant cannot normalise every normal. `ρ(n) = Σ_δ R(δ) · 2 Π_a Q((M δ)_a) /
 /// Σ_δ R(δ) Π_a Q(δ_a)`, with `R` the coefficients' autocovariance (from the tile filters),
 /// `Q` the B-spline's autocorrelation and `M = I − ½ n nᵀ`; it has the cube's symmetry, and a
-/// quadratic in two of its invariants reproduces `1/√ρ` within 2.4e-5 (`GAIN`). The normal
+/// quadratic in two of its invariants reproduces `1/√ρ` within 2.0e-5 (`GAIN`). The normal
 /// goes through [`unit_normal`] first. [`Multiband`](super::Multiband) multiplies its projected
 /// sums by it.
 ///
@@ -111,13 +112,14 @@ pub fn projected_gain<R: Real>(normal: [R; 3]) -> R {
     gain_unit(unit_normal(normal))
 }
 
-/// [`projected_gain`] of a normal that [`unit_normal`] returned.
+/// [`projected_gain`] of a normal that [`unit_normal`] returned. Every factor is below 1 in
+/// magnitude, so `mul_fraction` (no saturation) is exact where `mul_rn` would be.
 pub(crate) fn gain_unit<R: Real>(n: [R; 3]) -> R {
-    let q = n.map(|x| x.mul_rn(x));
-    let s = q[0].mul_rn(q[0]) + q[1].mul_rn(q[1]) + q[2].mul_rn(q[2]);
-    let p = q[0].mul_rn(q[1]).mul_rn(q[2]);
-    let c = GAIN.map(R::from_f32);
-    c[0] + c[1].mul_rn(s) + c[2].mul_rn(p) + c[3].mul_rn(s.mul_rn(s))
+    let q = n.map(|x| x.mul_fraction(x));
+    let s = q[0].mul_fraction(q[0]) + q[1].mul_fraction(q[1]) + q[2].mul_fraction(q[2]);
+    let p = q[0].mul_fraction(q[1]).mul_fraction(q[2]);
+    let c = GAIN.map(|k| R::from_ratio(k, 16));
+    c[0] + c[1].mul_fraction(s) + c[2].mul_fraction(p) + c[3].mul_fraction(s.mul_fraction(s))
 }
 
 impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
