@@ -16,8 +16,8 @@ use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::TabledPerlin;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
-use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE3_I16, Tiling};
-use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
+use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
+use bandnoise::{I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real};
 
 /// Samples per checksum.
 pub const POINTS: u32 = 64;
@@ -188,11 +188,12 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     ]
 }
 
-/// Checksums of what is not a noise description: projected sampling, the cell hash and
-/// generator, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 5] = [
+/// Checksums of what is not a noise description: projected sampling, wavelet gradients, the
+/// cell hash and generator, and [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 6] = [
     "multiband projected",
     "varied multiband projected",
+    "wavelet gradients",
     "cell hash and generator",
     "tabled perlin 2D",
     "tabled perlin 3D",
@@ -225,6 +226,22 @@ fn all<R: Bits>(out: &mut [u32]) {
         }
         push(f.0);
     }
+    // Wavelet gradients in the default tiling: a 2D and a 3D band, the 3D band projected, and
+    // projected multiband noise (each value and slope).
+    let mut f = Fnv::new();
+    let band2 = Wavelet::new(spec.seed(), &TILE2_I16);
+    let band3 = Wavelet::new(spec.seed(), &TILE3_I16);
+    let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution());
+    let mut add = |(v, g): (R, [R; 3])| g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+    for i in 0..POINTS / 4 {
+        let (p, n) = (point::<R, 3>(i, 100), point::<R, 3>(i + 1000, 1));
+        let (v, g) = band2.sample_with_gradient([p[0], p[1]]);
+        add((v, [g[0], g[1], R::ZERO]));
+        add(band3.sample_with_gradient(p));
+        add(band3.sample_projected_with_gradient(p, n));
+        add(multi.sample_projected_with_gradient(p, n));
+    }
+    push(f.0);
     // The cell hash and the cell generator: a hash, two uniforms and a Poisson count per cell.
     let mut f = Fnv::new();
     let hash = CellHash::new(5);

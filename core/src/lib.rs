@@ -85,7 +85,7 @@ pub mod spec;
 pub mod wavelet;
 
 pub use error::Error;
-pub use noise::{FilteredNoise, Noise, NoiseGradient, ProjectedNoise};
+pub use noise::{FilteredNoise, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient};
 pub use real::{I16F16, Real};
 
 /// The traits and types most programs need: `use bandnoise::prelude::*;`.
@@ -96,5 +96,7 @@ pub mod prelude {
         CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
     };
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
-    pub use crate::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
+    pub use crate::{
+        FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,
+    };
 }

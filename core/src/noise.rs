@@ -182,6 +182,35 @@ pub trait ProjectedNoise<R: Real>: Noise<R, 3> {
     fn projected_bound(&self) -> f32;
 }
 
+/// A projected noise that also gives its analytic gradient.
+///
+/// Implemented by [`Wavelet`](crate::wavelet::Wavelet) and
+/// [`Multiband`](crate::wavelet::Multiband) over 3D tiles.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{ProjectedNoise, ProjectedNoiseGradient, wavelet::{TILE3, Wavelet}};
+///
+/// let band = Wavelet::new(0, &TILE3);
+/// let (p, normal) = ([0.3f32, 1.6, -2.2], [0.0, 0.6, 0.8]);
+/// let (v, g) = band.sample_projected_with_gradient(p, normal);
+/// assert_eq!(v, band.sample_projected(p, normal));
+/// assert!(g.iter().all(|d| d.is_finite()));
+/// ```
+pub trait ProjectedNoiseGradient<R: Real>: ProjectedNoise<R> {
+    /// The projected value at `p` (bit-identical to
+    /// [`ProjectedNoise::sample_projected`]) and its gradient `∂/∂p`, the normal held fixed.
+    ///
+    /// # Contract
+    ///
+    /// As [`ProjectedNoise::sample_projected`] for the value; the gradient is finite for every
+    /// input (a non-finite coordinate is 0, where the gradient is that of the origin) and
+    /// never panics.
+    #[must_use]
+    fn sample_projected_with_gradient(&self, p: [R; 3], normal: [R; 3]) -> (R, [R; 3]);
+}
+
 impl<R: Real, const D: usize, N: FilteredNoise<R, D> + ?Sized> FilteredNoise<R, D> for &N {
     #[inline]
     fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
@@ -196,6 +225,13 @@ impl<R: Real, N: ProjectedNoise<R> + ?Sized> ProjectedNoise<R> for &N {
     }
     fn projected_bound(&self) -> f32 {
         (**self).projected_bound()
+    }
+}
+
+impl<R: Real, N: ProjectedNoiseGradient<R> + ?Sized> ProjectedNoiseGradient<R> for &N {
+    #[inline]
+    fn sample_projected_with_gradient(&self, p: [R; 3], normal: [R; 3]) -> (R, [R; 3]) {
+        (**self).sample_projected_with_gradient(p, normal)
     }
 }
 

@@ -1,7 +1,8 @@
 //! Wavelet noise in every tiling with arbitrary coordinates, normals and band lists (weights zero, NaN, huge):
 //! no panic; refused configurations are errors; accepted ones give finite values within their
 //! documented bounds (uniform distributions within [-1, 1]); a NaN or ±∞ coordinate samples 0
-//! there, bit for bit (bands, multiband, projected); any finite non-zero normal, however large
+//! there, bit for bit (bands, multiband, projected); gradients give the same values and finite
+//! slopes; any finite non-zero normal, however large
 //! or small, is normalised to its own direction, and its power-of-two multiples give the same
 //! bits.
 #![no_main]
@@ -10,7 +11,7 @@ use arbitrary::Arbitrary;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, unit_normal,
 };
-use bandnoise::{I16F16, Noise, ProjectedNoise};
+use bandnoise::{I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
@@ -40,6 +41,15 @@ fuzz_target!(|input: Input| {
     assert!(proj.is_finite() && proj.abs() <= 3.0 * b3, "{proj}");
     let _: I16F16 = band3.sample(q);
     let _: I16F16 = band3.sample_projected(q, nq);
+    // Gradients: the same value as without, bit for bit, and a finite slope.
+    let (v, g) = band3.sample_projected_with_gradient(p, n);
+    assert!(
+        v.to_bits() == proj.to_bits() && g.iter().all(|d| d.is_finite()),
+        "{g:?}"
+    );
+    let (v, g) = band3.sample_with_gradient(p);
+    assert!(v.to_bits() == band3.sample(p).to_bits() && g.iter().all(|d| d.is_finite()));
+    let _: (I16F16, _) = band3.sample_projected_with_gradient(q, nq);
     let u = unit_normal(n);
     let len2: f32 = u.iter().map(|x| x * x).sum();
     assert!((len2 - 1.0).abs() < 1e-4, "{n:?} → {u:?}");
@@ -97,6 +107,17 @@ fuzz_target!(|input: Input| {
             same(w, m.sample_projected(p0, n));
             let _: I16F16 = m.sample(q);
             let _: I16F16 = m.sample_projected(q, nq);
+            let (wg, g) = m.sample_projected_with_gradient(p, n);
+            assert!(
+                wg.to_bits() == w.to_bits() && g.iter().all(|d| d.is_finite()),
+                "{g:?}"
+            );
+            let (vg, g) = m.sample_with_gradient(p);
+            assert!(
+                vg.to_bits() == v.to_bits() && g.iter().all(|d| d.is_finite()),
+                "{g:?}"
+            );
+            let _: (I16F16, _) = m.sample_projected_with_gradient(q, nq);
         }
     }
 });

@@ -12,7 +12,7 @@
 //! | [`QuantizedTile2`], [`QuantizedTile3`]: `i16` tiles | | `quantized.rs` |
 //! | [`TILE2`], [`TILE3`], [`TILE2_I16`], [`TILE3_I16`]: the default tiles | | `defaults.rs` |
 //! | [`Wavelet`]: one band, 2D or 3D, tile orientations | §3.6, §4.3, App. 2 | `band.rs` |
-//! | [`Wavelet`] as a [`ProjectedNoise`](crate::ProjectedNoise): 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
+//! | [`Wavelet`] as a [`ProjectedNoise`](crate::ProjectedNoise) and [`ProjectedNoiseGradient`](crate::ProjectedNoiseGradient): 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
 //! | [`Multiband`], [`Bands`]: `Σ w_b N(2^b x)`, variance 1, Gaussian or uniform | eq. 1, §4.2 | `multiband.rs` |
 //! | [`erf`] | §4.2 | `erf.rs` |
 //!
@@ -43,8 +43,12 @@
 //! well under one for 16³ or 64² (`scripts/measure-tiles.sh`). A 3D band reads 27
 //! coefficients from a tile of up to 128 KiB and hashes its block's orientation, so it costs
 //! more than Perlin's 8 gradients from a 256-byte table: Cook & DeRose measured one 3D band
-//! 30% faster than RenderMan's Perlin noise, here 2D is about as fast as 3D Perlin and 3D
-//! about twice as slow. Figures per machine are in `bench/README.md`.
+//! 30% faster than RenderMan's Perlin noise. Here, with [`Tiling::Varied`] and the sample's
+//! coefficients in one block, 2D is about as fast as 3D Perlin and 3D about twice as slow; the
+//! default [`Tiling::Blended`] reads both blocks around a border in its blend zone (8 of
+//! every 64 coefficients per axis in 2D, 8 of 32 in 3D), so a sample whose coefficients reach
+//! a zone costs several times more. Figures per machine and
+//! tiling are in `bench/README.md`.
 
 mod band;
 mod constmath;

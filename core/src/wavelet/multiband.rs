@@ -399,6 +399,20 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
     }
 }
 
+/// The analytic gradient of projected multiband noise: each projected band's gradient (scaled
+/// by the normal's gain), combined as for [`NoiseGradient`](crate::NoiseGradient).
+impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Multiband<'_, T> {
+    #[inline]
+    fn sample_projected_with_gradient(&self, p: [R; 3], normal: [R; 3]) -> (R, [R; 3]) {
+        let n = super::projected::unit_normal(normal);
+        let gain = super::projected::gain_unit(n);
+        self.sum_with_gradient(p, 2, |q| {
+            let (v, g) = self.band.sample_projected_unit_with_gradient(q, n);
+            (v.mul_rn(gain), g.map(|x| x.mul_rn(gain)))
+        })
+    }
+}
+
 crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
 
 /// The analytic gradient: the bands' gradients, each times its frequency `2^(b+1)`, and for

@@ -32,6 +32,22 @@ fn bspline<R: Real>(t: R) -> R {
     }
 }
 
+/// [`bspline`]'s derivative: `t`, `3 − 2t`, `t − 3` on its three pieces, 0 outside `(0, 3)`
+/// (continuous: the B-spline is C¹).
+#[inline]
+fn bspline_derivative<R: Real>(t: R) -> R {
+    let three = R::from_i32(3);
+    if t <= R::ZERO || t >= three {
+        R::ZERO
+    } else if t < R::ONE {
+        t
+    } else if t < R::from_i32(2) {
+        three - t - t
+    } else {
+        t - three
+    }
+}
+
 /// The unit normal used for projection.
 ///
 /// A finite normal of any non-zero length is normalised: divided by its largest component
@@ -159,6 +175,28 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
     }
 }
 
+impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Wavelet<'_, T> {
+    /// The projected band and its analytic gradient in `p`: each coefficient's B-spline
+    /// product differentiated through `t = 3/2 − (p − c) + n (n·(p − c))/2` (C¹, like the
+    /// band itself).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::{ProjectedNoise, ProjectedNoiseGradient, wavelet::{TILE3, Wavelet}};
+    ///
+    /// let band = Wavelet::new(0, &TILE3);
+    /// let (p, up) = ([0.3f32, 0.6, 2.0], [0.0, 0.0, 1.0]);
+    /// let (v, g) = band.sample_projected_with_gradient(p, up);
+    /// assert_eq!(v, band.sample_projected(p, up));
+    /// assert!(g.iter().all(|d| d.is_finite()));
+    /// ```
+    #[inline]
+    fn sample_projected_with_gradient(&self, p: [R; 3], normal: [R; 3]) -> (R, [R; 3]) {
+        self.sample_projected_unit_with_gradient(p, unit_normal(normal))
+    }
+}
+
 /// Block placements for the up to 3 blocks per axis that a projected sample touches.
 struct Placements {
     base: [i32; 3],
@@ -177,6 +215,26 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// [`sample_projected`](ProjectedNoise::sample_projected) with a normal that
     /// [`unit_normal`] already returned (multiband noise normalises once for all its bands).
     pub(crate) fn sample_projected_unit<R: Real>(&self, p: [R; 3], nrm: [R; 3]) -> R {
+        self.projected::<R, false>(p, nrm).0
+    }
+
+    /// [`sample_projected_unit`](Self::sample_projected_unit) and its gradient.
+    pub(crate) fn sample_projected_unit_with_gradient<R: Real>(
+        &self,
+        p: [R; 3],
+        nrm: [R; 3],
+    ) -> (R, [R; 3]) {
+        self.projected::<R, true>(p, nrm)
+    }
+
+    /// The projected band at `p` along the unit normal `nrm` and, with `GRADIENT`, its
+    /// gradient in `p` (otherwise zeros). The value is the same, bit for bit, either way.
+    ///
+    /// Each coefficient's basis is `Π_a B(t_a)` with `t = 3/2 − d + n (n·d)/2`, `d = p − c`,
+    /// so `∂t_a/∂p_b = −δ_ab + n_a n_b / 2`: with `G_a = Σ_c n_c B'(t_a) Π_{a'≠a} B(t_a')`, the
+    /// gradient is `−G + n (n·G)/2`.
+    #[inline]
+    fn projected<R: Real, const GRADIENT: bool>(&self, p: [R; 3], nrm: [R; 3]) -> (R, [R; 3]) {
         let n = T::SIZE as i32;
         let half = R::from_ratio(1, 1);
         let three_halves = R::from_ratio(3, 1);
@@ -197,15 +255,20 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         }
         // Block q reaches coefficients [qn − h, qn + n + h): the first coefficient's blocks
         // start one before that of c + h.
-        let h = self.half_width::<3>() as i32;
+        let (h, o) = (self.half_width::<3>() as i32, self.origin::<3>());
         let mut placements = Placements {
             base: core::array::from_fn(|a| {
-                let c = cell[a].wrapping_add(kmin[a]).wrapping_add(h);
+                let c = cell[a]
+                    .wrapping_add(kmin[a])
+                    .wrapping_add(h)
+                    .wrapping_sub(o);
                 c.div_euclid(n).wrapping_sub(1)
             }),
             cache: [[[None; 3]; 3]; 3],
         };
         let mut sum = R::ZERO;
+        // G_a of the doc comment.
+        let mut partial = [R::ZERO; 3];
         for kz in kmin[2]..=kmax[2] {
             for ky in kmin[1]..=kmax[1] {
                 for kx in kmin[0]..=kmax[0] {
@@ -213,22 +276,57 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     // p − c, small whatever p is: the fraction minus an integer offset.
                     let d: [R; 3] = core::array::from_fn(|a| frac[a] - R::from_i32(k[a]));
                     let dot = nrm[0].mul_rn(d[0]) + nrm[1].mul_rn(d[1]) + nrm[2].mul_rn(d[2]);
-                    let mut weight = R::ONE;
-                    for a in 0..3 {
-                        let t = three_halves - d[a] + nrm[a].mul_rn(dot).mul_rn(half);
-                        weight = weight.mul_rn(bspline(t));
-                    }
-                    if weight == R::ZERO {
+                    let t: [R; 3] = core::array::from_fn(|a| {
+                        three_halves - d[a] + nrm[a].mul_rn(dot).mul_rn(half)
+                    });
+                    let b = t.map(bspline);
+                    let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
+                    // A weight of 0 adds nothing to the value, but the gradient skips only
+                    // coefficients outside the support (0, 3) on some axis: B(t) = t²/2 rounds
+                    // to 0 in fixed point for t < 2⁻⁸, where B' = t still counts.
+                    let skip = if GRADIENT {
+                        t.iter().any(|&t| t <= R::ZERO || t >= R::from_i32(3))
+                    } else {
+                        weight == R::ZERO
+                    };
+                    if skip {
                         continue;
                     }
                     let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
+                    let c = self.fetch(g, &mut placements);
                     // Saturating: the weights sum to less than 3, so a tile whose
                     // coefficients exceed a third of fixed point's range could overflow.
-                    sum = sum.saturating_add(weight.mul_rn(self.fetch(g, &mut placements)));
+                    sum = sum.saturating_add(weight.mul_rn(c));
+                    if GRADIENT {
+                        let db = t.map(bspline_derivative);
+                        let terms = [
+                            db[0].mul_rn(b[1]).mul_rn(b[2]),
+                            b[0].mul_rn(db[1]).mul_rn(b[2]),
+                            b[0].mul_rn(b[1]).mul_rn(db[2]),
+                        ];
+                        for (ga, term) in partial.iter_mut().zip(terms) {
+                            *ga = ga.saturating_add(term.mul_rn(c));
+                        }
+                    }
                 }
             }
         }
-        sum.canonical()
+        if !GRADIENT {
+            return (sum.canonical(), [R::ZERO; 3]);
+        }
+        // n (n·G)/2 − G, saturating throughout (fixed point's G may have saturated).
+        let along = nrm
+            .iter()
+            .zip(partial)
+            .fold(R::ZERO, |acc, (na, ga)| acc.saturating_add(na.mul_rn(ga)))
+            .mul_rn(half);
+        let gradient = core::array::from_fn(|a| {
+            nrm[a]
+                .mul_rn(along)
+                .saturating_add(partial[a].saturating_mul(-R::ONE))
+                .canonical()
+        });
+        (sum.canonical(), gradient)
     }
 
     /// The coefficient at global index `g`: `Σ ω_b t_b(g)` over the (up to 8) blocks `b` that
@@ -236,14 +334,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     #[inline]
     fn fetch<R: Real>(&self, g: [i32; 3], placements: &mut Placements) -> R {
         let n = T::SIZE;
-        let h = self.half_width::<3>();
+        let (h, o) = (self.half_width::<3>(), self.origin::<3>());
         // Along each axis: the first block reaching g, g's local index in it plus n, and the
         // number of blocks (2 in a blend zone).
         let mut first = [0i32; 3];
         let mut local = [0usize; 3];
         let mut count = [1usize; 3];
         for a in 0..3 {
-            let u = g[a].wrapping_add(h as i32);
+            let u = g[a].wrapping_add(h as i32).wrapping_sub(o);
             let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
             if r < 2 * h {
                 (first[a], local[a], count[a]) = (q.wrapping_sub(1), r + 2 * n - h, 2);

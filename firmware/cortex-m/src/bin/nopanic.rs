@@ -20,7 +20,9 @@ use bandnoise::levels::Levels;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
 };
-use bandnoise::{FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
+use bandnoise::{
+    FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,
+};
 use cortex_m as _;
 use cortex_m_rt::entry;
 
@@ -64,6 +66,9 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(w3.sample([p[0], p[1], p[2]]));
     add(w3.sample_projected([p[0], p[1], p[2]], [p[3], p[2], p[1]]));
     add(w3.sample_with_gradient([p[0], p[1], p[2]]).1[1]);
+    add(w3
+        .sample_projected_with_gradient([p[0], p[1], p[2]], [p[2], p[3], p[0]])
+        .1[2]);
     add(ValueNoise::new(2).sample_with_gradient([p[0], p[3]]).1[0]);
     if let Ok(b) = Bands::new(black_box(-2), black_box(&[0.5f32, 1.0, 0.25][..])) {
         let m =
@@ -71,6 +76,9 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         add(m.sample([p[0], p[1], p[2]]));
         add(m.sample_projected([p[0], p[1], p[2]], [p[1], p[0], p[3]]));
         add(m.sample_with_gradient([p[0], p[1], p[2]]).1[0]);
+        add(m
+            .sample_projected_with_gradient([p[0], p[1], p[2]], [p[3], p[1], p[0]])
+            .1[1]);
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
