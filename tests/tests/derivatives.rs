@@ -334,7 +334,7 @@ fn projected_gradients_match_central_differences() {
 /// exceeds 1. Bands are sampled over |p| < 100, multiband noise over |p| < 10: its finest band
 /// has frequency 2^5, and f32 rounds that band's coordinate `2^5 p + offset` to its ulp
 /// (2⁻¹² of a coefficient near 3200), so at |p| = 100 the analytic gradient, exact for the
-/// point f32 samples, is 2e-3 from the f64 central difference at `p` (1.8e-4 at |p| = 10).
+/// point f32 samples, is 2e-3 from the f64 central difference at `p` (under 4e-4 at |p| = 10).
 #[test]
 fn wavelet_gradients_in_f32_are_within_1e_3_of_central_differences() {
     let mut rng = Rng::from_env(174);

@@ -437,12 +437,12 @@ impl<'t, T> Wavelet<'t, T> {
         T: TileData<D>,
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
-        let (n, h, o) = (T::SIZE, self.half_width::<D>(), self.origin::<D>());
+        let (n, h) = (T::SIZE, self.half_width::<D>());
         let mut block = [0i32; D];
         let mut local0 = [[0usize; 1]; D];
         let mut crossing = 0usize; // axes whose three coefficients read a second block
         for a in 0..D {
-            let (b, l0, two) = axis_span(first[a].wrapping_sub(o), n, h);
+            let (b, l0, two) = axis_span(first[a], n, h);
             block[a] = b;
             local0[a] = [l0];
             crossing |= (two as usize) << a;
@@ -508,21 +508,6 @@ impl<'t, T> Wavelet<'t, T> {
     {
         match self.tiling {
             Tiling::Blended if T::SIZE >= 2 * BLEND + 3 => BLEND,
-            _ => 0,
-        }
-    }
-
-    /// Where the block lattice starts, in coefficients: block `q` starts at `q·n + origin`.
-    /// Half a tile with [`Tiling::Blended`], so the blend zones lie around `n/2 + q·n` and not
-    /// around the origin, where samples most often start (an image from (0, 0), a 3D slice at
-    /// z = 0); 0 otherwise (the other tilings' values are unchanged).
-    #[inline]
-    pub(crate) fn origin<const D: usize>(&self) -> i32
-    where
-        T: TileData<D>,
-    {
-        match self.tiling {
-            Tiling::Blended => (T::SIZE / 2) as i32,
             _ => 0,
         }
     }
@@ -697,7 +682,7 @@ impl<T> Wavelet<'_, T> {
         T: TileData<D>,
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
-        let (n, h, o) = (T::SIZE, self.half_width::<D>(), self.origin::<D>());
+        let (n, h) = (T::SIZE, self.half_width::<D>());
         let mut weights = [[[R::ZERO; LANES]; 3]; D];
         let mut local0 = [[0usize; LANES]; D];
         let mut block = [0i32; D];
@@ -710,7 +695,7 @@ impl<T> Wavelet<'_, T> {
                 for (wj, w) in weights[a].iter_mut().zip(w) {
                     wj[l] = w;
                 }
-                let (b, l0, t) = axis_span(first.wrapping_sub(o), n, h);
+                let (b, l0, t) = axis_span(first, n, h);
                 local0[a][l] = l0;
                 two[l] = t;
                 if l == 0 {

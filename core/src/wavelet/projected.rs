@@ -255,13 +255,10 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         }
         // Block q reaches coefficients [qn − h, qn + n + h): the first coefficient's blocks
         // start one before that of c + h.
-        let (h, o) = (self.half_width::<3>() as i32, self.origin::<3>());
+        let h = self.half_width::<3>() as i32;
         let mut placements = Placements {
             base: core::array::from_fn(|a| {
-                let c = cell[a]
-                    .wrapping_add(kmin[a])
-                    .wrapping_add(h)
-                    .wrapping_sub(o);
+                let c = cell[a].wrapping_add(kmin[a]).wrapping_add(h);
                 c.div_euclid(n).wrapping_sub(1)
             }),
             cache: [[[None; 3]; 3]; 3],
@@ -334,14 +331,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     #[inline]
     fn fetch<R: Real>(&self, g: [i32; 3], placements: &mut Placements) -> R {
         let n = T::SIZE;
-        let (h, o) = (self.half_width::<3>(), self.origin::<3>());
+        let h = self.half_width::<3>();
         // Along each axis: the first block reaching g, g's local index in it plus n, and the
         // number of blocks (2 in a blend zone).
         let mut first = [0i32; 3];
         let mut local = [0usize; 3];
         let mut count = [1usize; 3];
         for a in 0..3 {
-            let u = g[a].wrapping_add(h as i32).wrapping_sub(o);
+            let u = g[a].wrapping_add(h as i32);
             let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
             if r < 2 * h {
                 (first[a], local[a], count[a]) = (q.wrapping_sub(1), r + 2 * n - h, 2);
