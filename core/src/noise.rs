@@ -123,7 +123,9 @@ pub trait NoiseGradient<R: Real, const D: usize>: Noise<R, D> {
 /// A noise that anti-aliases itself from a sample's footprint (pbrt §10.6.3): the detail
 /// finer than the footprint, which a pixel cannot show without aliasing, is left out.
 ///
-/// Implemented by [`Fractal`](crate::fractal::Fractal) (pbrt's octave clamping).
+/// Implemented by [`Fractal`](crate::fractal::Fractal) (pbrt's octave clamping), and by
+/// [`Wavelet`](crate::wavelet::Wavelet) and [`Multiband`](crate::wavelet::Multiband) (each band
+/// averaged over the footprint's box, Cook & DeRose §4.1).
 ///
 /// # Examples
 ///

@@ -4,20 +4,23 @@
 //! there, bit for bit (bands, multiband, projected); gradients give the same values and finite
 //! slopes; any finite non-zero normal, however large
 //! or small, is normalised to its own direction, and its power-of-two multiples give the same
-//! bits.
+//! bits; filtered by any footprint, values stay within the bounds and a NaN footprint is none.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, unit_normal,
 };
-use bandnoise::{I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient};
+use bandnoise::{
+    FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient,
+};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
 struct Input {
     seed: u32,
     coords: [u32; 3],
+    footprint: [u32; 6],
     normal: [u32; 3],
     first: i32,
     weights: Vec<f32>,
@@ -50,6 +53,18 @@ fuzz_target!(|input: Input| {
     let (v, g) = band3.sample_with_gradient(p);
     assert!(v.to_bits() == band3.sample(p).to_bits() && g.iter().all(|d| d.is_finite()));
     let _: (I16F16, _) = band3.sample_projected_with_gradient(q, nq);
+    // Filtered by any footprint: within the bound; a NaN footprint is no footprint.
+    let dx = [0, 1, 2].map(|a| f32::from_bits(input.footprint[a]));
+    let dy = [3, 4, 5].map(|a| f32::from_bits(input.footprint[a]));
+    let v = band3.sample_filtered(p, dx, dy);
+    assert!(v.is_finite() && v.abs() <= b3, "{v}");
+    let nan = [f32::NAN; 3];
+    assert_eq!(
+        band3.sample_filtered(p, nan, nan).to_bits(),
+        band3.sample(p).to_bits()
+    );
+    let dq = input.footprint.map(|b| I16F16::from_bits(b as i32));
+    let _: I16F16 = band3.sample_filtered(q, [dq[0], dq[1], dq[2]], [dq[3], dq[4], dq[5]]);
     let u = unit_normal(n);
     let len2: f32 = u.iter().map(|x| x * x).sum();
     assert!((len2 - 1.0).abs() < 1e-4, "{n:?} → {u:?}");
@@ -118,6 +133,9 @@ fuzz_target!(|input: Input| {
                 "{g:?}"
             );
             let _: (I16F16, _) = m.sample_projected_with_gradient(q, nq);
+            let f = m.sample_filtered(p, dx, dy);
+            assert!(f.is_finite() && f.abs() <= bound, "{f} > {bound}");
+            let _: I16F16 = m.sample_filtered(q, [dq[0], dq[1], dq[2]], [dq[3], dq[4], dq[5]]);
         }
     }
 });

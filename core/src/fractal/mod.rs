@@ -10,7 +10,8 @@ mod footprint;
 
 use crate::batch::LANES;
 use crate::{Error, FilteredNoise, I16F16, Noise, NoiseGradient, Real};
-use footprint::{footprint_len2, octaves_for};
+pub(crate) use footprint::footprint_len2;
+use footprint::octaves_for;
 
 /// A validated setting: its `f32` value, and that value rounded once to I16F16.
 #[derive(Clone, Copy, Debug, PartialEq)]

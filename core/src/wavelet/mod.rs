@@ -14,6 +14,7 @@
 //! | [`Wavelet`]: one band, 2D or 3D, tile orientations | §3.6, §4.3, App. 2 | `band.rs` |
 //! | [`Wavelet`] as a [`ProjectedNoise`](crate::ProjectedNoise) and [`ProjectedNoiseGradient`](crate::ProjectedNoiseGradient): 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
 //! | [`Multiband`], [`Bands`]: `Σ w_b N(2^b x)`, variance 1, Gaussian or uniform | eq. 1, §4.2 | `multiband.rs` |
+//! | [`Wavelet`], [`Multiband`] as [`FilteredNoise`](crate::FilteredNoise): bands averaged over a footprint | §3.1, §4.1, §6 | `filtered.rs` |
 //! | [`erf`] | §4.2 | `erf.rs` |
 //!
 //! # Properties (tested in `tests/tests/wavelet.rs`)
@@ -35,6 +36,9 @@
 //! * Multiband noise with the default tiling, 10⁶ samples each: variance 2D and 3D within 1%
 //!   of 1, projected within 1% of 1 along an axis, oblique and random normals (each normal's
 //!   own [`projected_gain`]; `tests/tests/projected_variance.rs`).
+//! * Filtered by the pixel's footprint, one sample per pixel of 10-band noise is 100–250×
+//!   closer (mean squared error) to a 16×16-supersampled box-filtered image than a plain
+//!   sample, for flat, 1/f and halving band weights (`tests/tests/filtering.rs`).
 //! * Quantized tiles: shift 12, error ≤ 1.2e-4. I16F16 against f32: ≤ 3.3e-4.
 //!
 //! # Cost
@@ -54,6 +58,7 @@ mod band;
 mod constmath;
 mod defaults;
 mod erf;
+mod filtered;
 mod multiband;
 pub(crate) use multiband::DEFAULT_BANDS;
 mod projected;

@@ -298,10 +298,11 @@ impl<'t, T> Multiband<'t, T> {
     /// `offset_b`, as the [`Noise`] contract's "NaN and ±∞ are 0" asks. (An overflowing float
     /// is a multiple of 2³² anyway, whose cell wraps to 0.)
     fn sum<R: Real, const D: usize>(&self, p: [R; D], which: usize, f: impl Fn([R; D]) -> R) -> R {
-        self.sum_with_gradient(p, which, |q| (f(q), [R::ZERO; D])).0
+        self.sum_with_gradient(p, which, |_, q| (f(q), [R::ZERO; D]))
+            .0
     }
 
-    /// [`sum`](Self::sum) and its gradient, from each band's value and gradient `f(q)`: band
+    /// [`sum`](Self::sum) and its gradient, from each band's value and gradient `f(b, q)`: band
     /// `b` samples at `2^(b+1)·p + offset_b`, so its gradient counts `2^(b+1)` times; the
     /// uniform distribution multiplies by the derivative of its `erf`. The value is `sum`'s,
     /// bit for bit (`sum` is this with the gradients unused).
@@ -310,7 +311,7 @@ impl<'t, T> Multiband<'t, T> {
         &self,
         p: [R; D],
         which: usize,
-        f: impl Fn([R; D]) -> (R, [R; D]),
+        f: impl Fn(i32, [R; D]) -> (R, [R; D]),
     ) -> (R, [R; D]) {
         let mut sum = R::ZERO;
         let mut gradient = [R::ZERO; D];
@@ -331,7 +332,7 @@ impl<'t, T> Multiband<'t, T> {
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
             let weight = R::from_f32(w[which]);
-            let (v, g) = f(q);
+            let (v, g) = f(band, q);
             sum = sum.saturating_add(weight.mul_rn(v));
             for (ga, gb) in gradient.iter_mut().zip(g) {
                 *ga = ga.saturating_add(weight.mul_rn(gb).saturating_mul(scale));
@@ -406,7 +407,7 @@ impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Multiband<'_,
     fn sample_projected_with_gradient(&self, p: [R; 3], normal: [R; 3]) -> (R, [R; 3]) {
         let n = super::projected::unit_normal(normal);
         let gain = super::projected::gain_unit(n);
-        self.sum_with_gradient(p, 2, |q| {
+        self.sum_with_gradient(p, 2, |_, q| {
             let (v, g) = self.band.sample_projected_unit_with_gradient(q, n);
             (v.mul_rn(gain), g.map(|x| x.mul_rn(gain)))
         })
@@ -420,9 +421,52 @@ crate::noise::inherent_amplitude_bound!(Multiband<'_, T>, [T]);
 impl<R: Real, T: TileData<D>, const D: usize> crate::NoiseGradient<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
-        self.sum_with_gradient(p, D - 2, |q| {
+        self.sum_with_gradient(p, D - 2, |_, q| {
             crate::NoiseGradient::<R, D>::sample_with_gradient(&self.band, q)
         })
+    }
+}
+
+/// Multiband noise filtered by a sample's footprint (§3.1, §4.1): each band averaged over the
+/// footprint's box in its own coefficients ([`Wavelet`](super::Wavelet)'s
+/// [`FilteredNoise`](crate::FilteredNoise)).
+impl<R: Real, T: TileData<D>, const D: usize> crate::FilteredNoise<R, D> for Multiband<'_, T> {
+    /// Multiband noise as a pixel whose footprint is spanned by `dpdx` and `dpdy` sees it:
+    /// band `b` samples `2^(b+1)·p`, so it has `2^(b+1)` times the footprint's width in
+    /// coefficients per pixel. Bands with at most ¼ are sampled as they are, wider ones are
+    /// averaged over the footprint's box through a widened basis, and bands with 3 to 4 or
+    /// more coefficients per pixel (whose box average has less than 4% of their variance left)
+    /// fade out. The weights stay those of [`sample`](Noise::sample), so the filtered value has
+    /// the smaller variance a filtered pixel has.
+    ///
+    /// # Contract
+    ///
+    /// As [`sample`](Noise::sample) for `p`; a zero or NaN footprint gives `sample(p)`, bit for
+    /// bit; an infinite one 0; never panics, and the result is within
+    /// [`amplitude_bound`](Noise::amplitude_bound).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::{FilteredNoise, Noise, wavelet::{Multiband, TILE2}};
+    ///
+    /// let m = Multiband::new(0, &TILE2, Default::default(), Default::default());
+    /// let p = [0.3f32, 4.1];
+    /// assert_eq!(m.sample_filtered(p, [0.0, 0.0], [0.0, 0.0]), m.sample(p));
+    /// // A pixel 1/8 wide: bands 0–4 (sampled at 2p to 32p) have 1/4 to 4 coefficients in it.
+    /// let pixel = 1.0 / 8.0;
+    /// let v = m.sample_filtered(p, [pixel, 0.0], [0.0, pixel]);
+    /// assert!(v.abs() <= Noise::<f32, 2>::amplitude_bound(&m));
+    /// ```
+    fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
+        let widths = super::filtered::footprint_widths(&dpdx, &dpdy);
+        self.sum_with_gradient(p, D - 2, |band, q| {
+            // 2^(band + 1), exactly: band + 1 is in [−23, 25], a normal f32's exponent.
+            let scale = f32::from_bits(((band + 1 + 127) as u32) << 23);
+            let v = self.band.sample_boxed(q, widths.map(|w| w * scale));
+            (v, [R::ZERO; D])
+        })
+        .0
     }
 }
 

@@ -16,7 +16,7 @@ use super::band::{Placement, TileData, Wavelet, blend_weight, tile_index};
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
 /// `(3 − t)²/2`, 0 elsewhere.
 #[inline]
-fn bspline<R: Real>(t: R) -> R {
+pub(crate) fn bspline<R: Real>(t: R) -> R {
     let half = R::from_ratio(1, 1);
     let three = R::from_i32(3);
     if t <= R::ZERO || t >= three {
@@ -198,9 +198,20 @@ impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Wavelet<'_, T
 }
 
 /// Block placements for the up to 3 blocks per axis that a projected sample touches.
-struct Placements {
-    base: [i32; 3],
-    cache: [[[Option<Placement<3>>; 3]; 3]; 3],
+pub(crate) struct Placements<const D: usize> {
+    base: [i32; D],
+    cache: [[[Option<Placement<D>>; 3]; 3]; 3],
+}
+
+impl<const D: usize> Placements<D> {
+    /// An empty cache whose block slots start at `base` along each axis.
+    #[inline]
+    pub(crate) fn new(base: [i32; D]) -> Self {
+        Placements {
+            base,
+            cache: [[[None; 3]; 3]; 3],
+        }
+    }
 }
 
 impl<T: TileData<3>> Wavelet<'_, T> {
@@ -256,13 +267,10 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         // Block q reaches coefficients [qn − h, qn + n + h): the first coefficient's blocks
         // start one before that of c + h.
         let h = self.half_width::<3>() as i32;
-        let mut placements = Placements {
-            base: core::array::from_fn(|a| {
-                let c = cell[a].wrapping_add(kmin[a]).wrapping_add(h);
-                c.div_euclid(n).wrapping_sub(1)
-            }),
-            cache: [[[None; 3]; 3]; 3],
-        };
+        let mut placements = Placements::new(core::array::from_fn(|a| {
+            let c = cell[a].wrapping_add(kmin[a]).wrapping_add(h);
+            c.div_euclid(n).wrapping_sub(1)
+        }));
         let mut sum = R::ZERO;
         // G_a of the doc comment.
         let mut partial = [R::ZERO; 3];
@@ -325,19 +333,28 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         });
         (sum.canonical(), gradient)
     }
+}
 
-    /// The coefficient at global index `g`: `Σ ω_b t_b(g)` over the (up to 8) blocks `b` that
+impl<T> Wavelet<'_, T> {
+    /// The coefficient at global index `g`: `Σ ω_b t_b(g)` over the (up to 2ᴰ) blocks `b` that
     /// reach it, each read in its placement and weighted by its blend weights.
     #[inline]
-    fn fetch<R: Real>(&self, g: [i32; 3], placements: &mut Placements) -> R {
+    pub(crate) fn fetch<R: Real, const D: usize>(
+        &self,
+        g: [i32; D],
+        placements: &mut Placements<D>,
+    ) -> R
+    where
+        T: TileData<D>,
+    {
         let n = T::SIZE;
-        let h = self.half_width::<3>();
+        let h = self.half_width::<D>();
         // Along each axis: the first block reaching g, g's local index in it plus n, and the
         // number of blocks (2 in a blend zone).
-        let mut first = [0i32; 3];
-        let mut local = [0usize; 3];
+        let mut first = [0i32; D];
+        let mut local = [0usize; D];
         let mut count = [1usize; 3];
-        for a in 0..3 {
+        for a in 0..D {
             let u = g[a].wrapping_add(h as i32);
             let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
             if r < 2 * h {
@@ -351,16 +368,20 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             for my in 0..count[1] {
                 for mx in 0..count[0] {
                     let m = [mx, my, mz];
-                    let block: [i32; 3] =
+                    let block: [i32; D] =
                         core::array::from_fn(|a| first[a].wrapping_add(m[a] as i32));
                     let slot: [usize; 3] = core::array::from_fn(|a| {
-                        block[a].wrapping_sub(placements.base[a]).clamp(0, 2) as usize
+                        if a < D {
+                            block[a].wrapping_sub(placements.base[a]).clamp(0, 2) as usize
+                        } else {
+                            0
+                        }
                     });
                     let place = *placements.cache[slot[2]][slot[1]][slot[0]]
                         .get_or_insert_with(|| self.placement(block));
-                    let l: [usize; 3] = core::array::from_fn(|a| local[a] - m[a] * n);
+                    let l: [usize; D] = core::array::from_fn(|a| local[a] - m[a] * n);
                     let mut c: R = self.tile().flat(tile_index(l, &place, n));
-                    for a in 0..3 {
+                    for a in 0..D {
                         if count[a] == 2 {
                             c = blended(c, l[a], n, h);
                         }

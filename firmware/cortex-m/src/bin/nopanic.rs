@@ -69,6 +69,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(w3
         .sample_projected_with_gradient([p[0], p[1], p[2]], [p[2], p[3], p[0]])
         .1[2]);
+    add(w3.sample_filtered([p[0], p[1], p[2]], [p[3], p[1], p[0]], [p[2], p[3], p[3]]));
     add(ValueNoise::new(2).sample_with_gradient([p[0], p[3]]).1[0]);
     if let Ok(b) = Bands::new(black_box(-2), black_box(&[0.5f32, 1.0, 0.25][..])) {
         let m =
@@ -79,6 +80,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         add(m
             .sample_projected_with_gradient([p[0], p[1], p[2]], [p[3], p[1], p[0]])
             .1[1]);
+        add(m.sample_filtered([p[0], p[1], p[2]], [p[3], p[0], p[1]], [p[1], p[2], p[3]]));
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
