@@ -190,13 +190,14 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     ]
 }
 
-/// Checksums of what is not a noise description: projected sampling, wavelet gradients and
-/// filtering, the cell hash and generator, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 7] = [
+/// Checksums of what is not a noise description: projected sampling, wavelet gradients,
+/// filtering and infinite noise, the cell hash and generator, and [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 8] = [
     "multiband projected",
     "varied multiband projected",
     "wavelet gradients",
     "wavelet filtered",
+    "wavelet infinite",
     "cell hash and generator",
     "tabled perlin 2D",
     "tabled perlin 3D",
@@ -252,6 +253,17 @@ fn all<R: Bits>(out: &mut [u32]) {
         let width = R::from_ratio(i as i32, 6);
         let (dx, dy) = ([width, R::ZERO, R::ZERO], [R::ZERO, width, width]);
         f.add(multi.sample_filtered(point::<R, 3>(i, 100), dx, dy).bits());
+    }
+    push(f.0);
+    // Infinite noise at footprints from 2^-8 to 8 (3D multiband noise).
+    let mut f = Fnv::new();
+    for i in 0..POINTS / 4 {
+        let footprint = R::from_ratio(i as i32 * 137 % 32768 + 1, 8);
+        f.add(
+            multi
+                .sample_infinite(point::<R, 3>(i, 100), footprint)
+                .bits(),
+        );
     }
     push(f.0);
     // The cell hash and the cell generator: a hash, two uniforms and a Poisson count per cell.

@@ -4,7 +4,8 @@
 //! there, bit for bit (bands, multiband, projected); gradients give the same values and finite
 //! slopes; any finite non-zero normal, however large
 //! or small, is normalised to its own direction, and its power-of-two multiples give the same
-//! bits; filtered by any footprint, values stay within the bounds and a NaN footprint is none.
+//! bits; filtered by any footprint, and as infinite noise at any footprint, values stay within
+//! the bounds and a NaN footprint is none.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -135,6 +136,10 @@ fuzz_target!(|input: Input| {
             let _: (I16F16, _) = m.sample_projected_with_gradient(q, nq);
             let f = m.sample_filtered(p, dx, dy);
             assert!(f.is_finite() && f.abs() <= bound, "{f} > {bound}");
+            let z = m.sample_infinite(p, dx[0]);
+            let zb = m.infinite_bound::<3>();
+            assert!(z.is_finite() && z.abs() <= zb, "{z} > {zb}");
+            let _: I16F16 = m.sample_infinite(q, dq[0]);
             let _: I16F16 = m.sample_filtered(q, [dq[0], dq[1], dq[2]], [dq[3], dq[4], dq[5]]);
         }
     }

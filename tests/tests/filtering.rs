@@ -3,7 +3,7 @@
 
 use bandnoise::batch::Grid;
 use bandnoise::prelude::*;
-use bandnoise::wavelet::{TILE2_I16, Tile2};
+use bandnoise::wavelet::{TILE2_I16, TILE3_I16, Tile2};
 
 /// Pixels per side.
 const SIDE: usize = 512;
@@ -145,7 +145,7 @@ fn filtering_by_footprint_beats_plain_sampling_against_a_supersampled_reference(
 
 /// The contract: a zero, tiny or NaN footprint is `sample`, bit for bit; an infinite or huge
 /// one gives 0; any footprint stays within the bound; fixed point follows f32; 3D and the
-/// single band behave alike.
+/// single band behave alike. Likewise for infinite noise's footprints.
 #[test]
 fn filtered_wavelet_noise_keeps_its_contract() {
     let mut rng = bandnoise_tests::Rng::from_env(180);
@@ -153,7 +153,7 @@ fn filtered_wavelet_noise_keeps_its_contract() {
     let m3 = Multiband::new(3, &TILE3, Bands::default(), Distribution::Uniform);
     let band = Wavelet::new(3, &TILE2);
     let fixed = Multiband::new(3, &TILE2_I16, Bands::default(), Distribution::Gaussian);
-    let mut worst = 0.0f64;
+    let (mut worst, mut worst_infinite) = (0.0f64, 0.0f64);
     for _ in 0..20_000 {
         let p: [f32; 3] = core::array::from_fn(|_| rng.f64_in(-200.0, 200.0) as f32);
         let q = [p[0], p[1]];
@@ -187,7 +187,106 @@ fn filtered_wavelet_noise_keeps_its_contract() {
         let to = |a: [I16F16; 2]| a.map(|x| x.to_num::<f32>());
         let vf: f32 = fixed.sample_filtered(to(qx), to(dxq), to(dyq));
         worst = worst.max((vq.to_num::<f64>() - vf as f64).abs());
+        // Infinite noise: a footprint that is not positive and finite counts as 1; any other
+        // stays within the bound, and fixed point follows f32.
+        for bad in [0.0, -2.0, f32::NAN, f32::INFINITY] {
+            assert_eq!(m2.sample_infinite(q, bad), m2.sample_infinite(q, 1.0));
+        }
+        let z = m3.sample_infinite(p, footprint * 8.0);
+        assert!(z.abs() <= 1.0);
+        let z = m2.sample_infinite(q, footprint);
+        assert!(z.abs() <= m2.infinite_bound::<2>(), "{z}");
+        // Footprints from 1/2 (finer ones scale |p| ≤ 200 past I16F16's range in the finest
+        // band, where fixed point wraps) to 8.
+        let zoom = I16F16::from_num(((0.5 + 7.5 * footprint) * 4096.0).round() / 4096.0);
+        let zq = fixed.sample_infinite(qx, zoom);
+        let zf: f32 = fixed.sample_infinite(to(qx), zoom.to_num::<f32>());
+        worst_infinite = worst_infinite.max((zq.to_num::<f64>() - zf as f64).abs());
     }
+    println!("infinite multiband 2D: max |I16F16 − f32| = {worst_infinite:.2e}");
+    // Found by the fuzz target: zoomed out so far that only a band of weight 3e-20 is left,
+    // whose square is subnormal; normalising it must not overflow.
+    let tiny = Bands::new(-1, &[1.2354384e-38, -4.1720522e-21, 5.6541e-41]).unwrap();
+    let m = Multiband::new(1, &TILE3_I16, tiny, Distribution::Gaussian);
+    let z = m.sample_infinite([1.9262965e31f32, -9.856597e24, 3.59e-43], 2f32.powi(41));
+    assert!(z.is_finite() && z.abs() <= m.infinite_bound::<3>(), "{z}");
+    assert!(worst_infinite < 2e-3);
     println!("filtered multiband 2D: max |I16F16 − f32| = {worst:.2e}");
     assert!(worst < 2e-3);
+}
+
+/// Infinite noise (§5.4) along a zoom path over 2^10: the variance stays within ±5% of 1 at
+/// every zoom level (2·10⁴ points at each of 41 levels, a quarter octave apart), and from one
+/// frame to the next of a zoom of one octave per second at 60 frames per second, no point's
+/// value changes by more than the noise's own change between neighbouring pixels of the frame
+/// (the value at a point moves as the bands' weights shift by one place per octave, so the
+/// change per frame is proportional to the zoom per frame). The bands are six halving ones from
+/// −8, relative to a footprint of 1 (the finest, band −3, has ¼ coefficient per pixel).
+#[test]
+fn infinite_noise_keeps_its_variance_and_has_no_jumps_along_a_zoom() {
+    let mut rng = bandnoise_tests::Rng::from_env(181);
+    let bands = Bands::fractal(-8, 6, 0.5).unwrap();
+    let m2 = Multiband::new(5, &TILE2, bands, Distribution::Gaussian);
+    let m3 = Multiband::new(5, &TILE3, bands, Distribution::Gaussian);
+    for (name, two) in [("2D", true), ("3D", false)] {
+        let sample = |p: [f64; 3], footprint: f64| -> f64 {
+            if two {
+                m2.sample_infinite([p[0], p[1]], footprint)
+            } else {
+                m3.sample_infinite(p, footprint)
+            }
+        };
+        let mut worst = 0.0f64;
+        for level in 0..=40 {
+            let footprint = 2f64.powf(-(level as f64) / 4.0);
+            let mut sum2 = 0.0;
+            for _ in 0..20_000 {
+                // Points over many of the coarsest band's coefficients at this zoom (band −8
+                // has one per 128 pixels).
+                let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-1e5, 1e5) * footprint);
+                sum2 += sample(p, footprint).powi(2);
+            }
+            let var = sum2 / 20_000.0;
+            worst = worst.max((var - 1.0).abs());
+            assert!(
+                (var - 1.0).abs() < 0.05,
+                "{name} footprint {footprint}: variance {var}"
+            );
+        }
+        // A frame of 32² pixels around a centre, zoomed in 2^(1/60) per frame.
+        let centre = [12.34, -5.67, 0.37];
+        let (mut jump, mut step) = (0.0f64, 0.0f64);
+        let mut ratio_worst = 0.0f64;
+        for frame in 0..600 {
+            let w0 = 2f64.powf(-frame as f64 / 60.0);
+            let w1 = 2f64.powf(-(frame + 1) as f64 / 60.0);
+            let (mut frame_jump, mut frame_step) = (0.0f64, 0.0f64);
+            for j in 0..32 {
+                for i in 0..32 {
+                    let p = [
+                        centre[0] + (i as f64 - 16.0) * w0,
+                        centre[1] + (j as f64 - 16.0) * w0,
+                        centre[2],
+                    ];
+                    let v = sample(p, w0);
+                    frame_jump = frame_jump.max((sample(p, w1) - v).abs());
+                    let right = [p[0] + w0, p[1], p[2]];
+                    frame_step = frame_step.max((sample(right, w0) - v).abs());
+                }
+            }
+            jump = jump.max(frame_jump);
+            step = step.max(frame_step);
+            ratio_worst = ratio_worst.max(frame_jump / frame_step);
+            assert!(
+                frame_jump <= frame_step,
+                "{name} frame {frame}: jump {frame_jump} > step {frame_step}"
+            );
+        }
+        println!(
+            "infinite {name}: variance within {:.1}% of 1 over 2^10 of zoom; largest \
+             frame-to-frame change at a point {jump:.3}, largest change between neighbouring \
+             pixels {step:.3} (worst frame's ratio {ratio_worst:.2})",
+            worst * 100.0
+        );
+    }
 }

@@ -15,6 +15,7 @@
 //! | [`Wavelet`] as a [`ProjectedNoise`](crate::ProjectedNoise) and [`ProjectedNoiseGradient`](crate::ProjectedNoiseGradient): 3D → 2D | §3.7, §4.1 eqs. 35–36, App. 2 | `projected.rs` |
 //! | [`Multiband`], [`Bands`]: `Σ w_b N(2^b x)`, variance 1, Gaussian or uniform | eq. 1, §4.2 | `multiband.rs` |
 //! | [`Wavelet`], [`Multiband`] as [`FilteredNoise`](crate::FilteredNoise): bands averaged over a footprint | §3.1, §4.1, §6 | `filtered.rs` |
+//! | [`Multiband::sample_infinite`]: band weights relative to the footprint | §5.4 | `multiband.rs` |
 //! | [`erf`] | §4.2 | `erf.rs` |
 //!
 //! # Properties (tested in `tests/tests/wavelet.rs`)
@@ -39,6 +40,8 @@
 //! * Filtered by the pixel's footprint, one sample per pixel of 10-band noise is 100–250×
 //!   closer (mean squared error) to a 16×16-supersampled box-filtered image than a plain
 //!   sample, for flat, 1/f and halving band weights (`tests/tests/filtering.rs`).
+//! * Infinite noise along a zoom over 2¹⁰: variance within 3.1% of 1 at every level; at 60
+//!   frames per octave, a point changes less between frames than neighbouring pixels differ.
 //! * Quantized tiles: shift 12, error ≤ 1.2e-4. I16F16 against f32: ≤ 3.3e-4.
 //!
 //! # Cost

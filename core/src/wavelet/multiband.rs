@@ -313,13 +313,26 @@ impl<'t, T> Multiband<'t, T> {
         which: usize,
         f: impl Fn(i32, [R; D]) -> (R, [R; D]),
     ) -> (R, [R; D]) {
+        let first = self.bands.first;
+        let weights = self.scaled.iter().enumerate();
+        self.sum_weighted(p, weights.map(|(i, w)| (first + i as i32, w[which])), f)
+    }
+
+    /// [`sum_with_gradient`](Self::sum_with_gradient) over the bands and scaled weights that
+    /// `weights` lists.
+    #[inline]
+    fn sum_weighted<R: Real, const D: usize>(
+        &self,
+        p: [R; D],
+        weights: impl Iterator<Item = (i32, f32)>,
+        f: impl Fn(i32, [R; D]) -> (R, [R; D]),
+    ) -> (R, [R; D]) {
         let mut sum = R::ZERO;
         let mut gradient = [R::ZERO; D];
-        for (i, w) in self.scaled.iter().enumerate() {
-            if w[which] == 0.0 {
+        for (band, w) in weights {
+            if w == 0.0 {
                 continue;
             }
-            let band = self.bands.first + i as i32;
             let e = band + 1;
             let scale = if e >= 0 {
                 R::from_i32(1 << e.min(30))
@@ -331,7 +344,7 @@ impl<'t, T> Multiband<'t, T> {
                     .finite_or_zero()
                     .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
             });
-            let weight = R::from_f32(w[which]);
+            let weight = R::from_f32(w);
             let (v, g) = f(band, q);
             sum = sum.saturating_add(weight.mul_rn(v));
             for (ga, gb) in gradient.iter_mut().zip(g) {
@@ -348,6 +361,111 @@ impl<'t, T> Multiband<'t, T> {
                     u.canonical(),
                     gradient.map(|g| g.saturating_mul(chain).canonical()),
                 )
+            }
+        }
+    }
+
+    /// Infinite noise (§5.4): the band weights follow the sample's footprint, so zooming in
+    /// or out keeps the look of the noise, coarse bands fading out as fine ones fade in.
+    ///
+    /// The bands are read relative to a footprint of 1: with a footprint of `2^L` noise units
+    /// per pixel, the band `k` places after [`Bands::first`] sits at absolute band
+    /// `first + k − L`, and for fractional `L` each absolute band takes the weight interpolated
+    /// linearly between its two neighbours in the list (the list's ends fade to 0 one band
+    /// beyond them). The weights are normalised at every footprint, so the variance is 1 at
+    /// every zoom and changes with `L` continuously: there is no jump as bands fade.
+    ///
+    /// # Contract
+    ///
+    /// Never panics; coordinates as [`sample`](Noise::sample). A footprint that is zero,
+    /// negative or not finite counts as 1 (the bands as listed). Absolute bands outside
+    /// `[−40, 29]` (footprints beyond about 2⁻²⁹ or 2⁴⁰ for the default bands) are left out,
+    /// and with none left the result is 0. The result is within
+    /// [`infinite_bound`](Self::infinite_bound) (within `[-1, 1]` for
+    /// [`Distribution::Uniform`]).
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::{Noise, wavelet::{Multiband, TILE2}};
+    ///
+    /// let m = Multiband::new(0, &TILE2, Default::default(), Default::default());
+    /// let p = [0.3f32, 4.1];
+    /// // A footprint of 1: the bands as listed (the same weights, normalised per sample).
+    /// assert!((m.sample_infinite(p, 1.0) - m.sample(p)).abs() < 1e-5);
+    /// // Zoomed in 1000 times: as much detail per pixel, at a thousandth of the scale.
+    /// let v = m.sample_infinite(p, 1e-3);
+    /// assert!(v.abs() <= m.infinite_bound::<2>());
+    /// ```
+    pub fn sample_infinite<R: Real, const D: usize>(&self, p: [R; D], footprint: R) -> R
+    where
+        T: TileData<D>,
+        Wavelet<'t, T>: Noise<R, D>,
+    {
+        let which = D - 2;
+        let f = footprint.to_f32();
+        let l = if f > 0.0 && f.is_finite() {
+            libm::log2f(f)
+        } else {
+            0.0
+        };
+        // The list's weights, 0 one place beyond each end.
+        let listed = |k: i32| -> f32 {
+            usize::try_from(k)
+                .ok()
+                .and_then(|k| self.scaled.get(k))
+                .map_or(0.0, |w| w[which])
+        };
+        // Absolute band b is at place x = b − first + L of the list.
+        let first = self.bands.first;
+        let count = self.scaled.len() as i32;
+        let x0 = libm::floorf(l);
+        let t = l - x0;
+        let mut weights: Vec<(i32, f32), { MAX_BANDS + 1 }> = Vec::new();
+        let mut largest = 0.0f32;
+        // Places k + t for k in −1..count: absolute bands first + k − x0.
+        for k in -1..count {
+            let w = (1.0 - t) * listed(k) + t * listed(k + 1);
+            let band = (first + k) as i64 - x0 as i64;
+            if w != 0.0 && (-40..=29).contains(&band) {
+                largest = largest.max(w.abs());
+                // Cannot fail: at most MAX_BANDS + 1 places.
+                let _ = weights.push((band as i32, w));
+            }
+        }
+        if largest <= 0.0 {
+            return R::ZERO; // no band: 0 in either distribution
+        }
+        // Σ w² relative to the largest weight (at least 1, so the ratio cannot overflow even
+        // where only tiny weights are left; the listed weights' Σ w² is 1/σ², about 4).
+        let ss: f32 = weights
+            .iter()
+            .map(|(_, w)| (w / largest) * (w / largest))
+            .sum();
+        let listed_ss: f32 = (0..count).map(|k| listed(k) * listed(k)).sum();
+        let norm = libm::sqrtf(listed_ss / ss);
+        let bands = weights.iter().map(|&(b, w)| (b, w / largest * norm));
+        self.sum_weighted(p, bands, |_, q| (self.band.sample(q), [R::ZERO; D]))
+            .0
+    }
+
+    /// A bound on `|sample_infinite|` in `D` dimensions: the weights at any footprint have the
+    /// listed weights' sum of squares over at most one band more, so their sum of magnitudes is
+    /// at most `√((n + 1) Σ w²)` (Cauchy–Schwarz), times the largest coefficient. 1 for
+    /// [`Distribution::Uniform`].
+    #[must_use]
+    pub fn infinite_bound<const D: usize>(&self) -> f32
+    where
+        T: TileData<D>,
+    {
+        match self.distribution {
+            Distribution::Uniform => 1.0,
+            Distribution::Gaussian => {
+                let which = D - 2;
+                let ss: f32 = self.scaled.iter().map(|w| w[which] * w[which]).sum();
+                let n = (self.scaled.len() + 1) as f32;
+                libm::sqrtf(n * ss) * self.band.coefficient_bound::<D>() * (1.0 + 1e-4)
+                    + crate::lattice::ROUNDING
             }
         }
     }

@@ -81,6 +81,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
             .sample_projected_with_gradient([p[0], p[1], p[2]], [p[3], p[1], p[0]])
             .1[1]);
         add(m.sample_filtered([p[0], p[1], p[2]], [p[3], p[0], p[1]], [p[1], p[2], p[3]]));
+        add(m.sample_infinite([p[0], p[1], p[2]], p[3]));
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
