@@ -9,7 +9,9 @@
 //! `[-bound, bound]` (the noise's documented amplitude bound) to black..white. The noises come
 //! from the runtime description (`bandnoise::spec`): every base in 2D, in `f32` (`NAME-2d.png`)
 //! and in fixed point (`NAME-2d-fixed.png`), then fractal sums and periodic tiles written in
-//! its text form. `--spec TEXT` renders one description of your own instead (`spec.png`).
+//! its text form; then wavelet noise plain and filtered by the pixel's footprint, and infinite
+//! wavelet noise at four zooms. `--spec TEXT` renders one description of your own instead
+//! (`spec.png`).
 
 use std::fs::{self, File};
 use std::io::BufWriter;
@@ -72,18 +74,59 @@ fn parse_args() -> Result<Options, String> {
 
 /// Samples `noise` over the grid and writes it as an 8-bit grey PNG.
 fn render<R: Real, N: Noise<R, 2>>(o: &Options, name: &str, noise: &N) -> Result<(), String> {
-    let n = o.size as usize;
     let bound = noise.amplitude_bound();
-    let step = o.scale / o.size as f32;
+    let f = |p: [f32; 2], _| noise.sample(p.map(R::from_f32)).to_f32();
+    render_with(o, name, bound, 1.0, f)
+}
+
+/// Writes `f(p, footprint)` over the grid, zoomed in `zoom` times about its centre, mapping
+/// `[-bound, bound]` to black..white. `footprint` is the distance between pixels.
+fn render_with(
+    o: &Options,
+    name: &str,
+    bound: f32,
+    zoom: f32,
+    f: impl Fn([f32; 2], f32) -> f32,
+) -> Result<(), String> {
+    let n = o.size as usize;
+    let step = o.scale / o.size as f32 / zoom;
+    let centre = 0.5 * o.scale;
     let mut pixels = Vec::with_capacity(n * n);
     for j in 0..n {
         for i in 0..n {
-            let p = [R::from_f32(i as f32 * step), R::from_f32(j as f32 * step)];
-            let v = noise.sample(p).to_f32() / bound;
+            let at = |k: usize| centre + (k as f32 - 0.5 * n as f32) * step;
+            let v = f([at(i), at(j)], step) / bound;
             pixels.push(((v * 0.5 + 0.5).clamp(0.0, 1.0) * 255.0).round() as u8);
         }
     }
     write_png(&o.out.join(format!("{name}.png")), o.size, &pixels)
+}
+
+/// Wavelet noise rendered as a pixel sees it (Cook & DeRose §4.1, §5.4): ten bands of equal
+/// weight, most of them finer than the pixels, sampled plainly (aliased) and filtered by the
+/// pixel's footprint; and infinite noise zoomed in 1, 16, 256 and 4096 times.
+fn render_wavelet_filtering(o: &Options) -> Result<(), String> {
+    use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2};
+    let bands = Bands::new(-1, &[1.0; 10]).map_err(|e| e.to_string())?;
+    let m = Multiband::new(o.seed, &TILE2, bands, Distribution::Gaussian);
+    let bound = 3.0; // three standard deviations
+    render_with(o, "wavelet-10-bands-plain", bound, 1.0, |p, _| m.sample(p))?;
+    render_with(o, "wavelet-10-bands-filtered", bound, 1.0, |p, w| {
+        m.sample_filtered(p, [w, 0.0], [0.0, w])
+    })?;
+    // Six halving bands relative to a footprint of 1, the finest at ¼ coefficient per pixel.
+    let bands = Bands::fractal(-8, 6, 0.5).map_err(|e| e.to_string())?;
+    let infinite = Multiband::new(o.seed, &TILE2, bands, Distribution::Gaussian);
+    for zoom in [1u32, 16, 256, 4096] {
+        render_with(
+            o,
+            &format!("wavelet-infinite-zoom-{zoom}"),
+            bound,
+            zoom as f32,
+            |p, w| infinite.sample_infinite(p, w),
+        )?;
+    }
+    Ok(())
 }
 
 fn write_png(path: &Path, size: u32, pixels: &[u8]) -> Result<(), String> {
@@ -129,7 +172,7 @@ fn run(o: &Options) -> Result<(), String> {
         let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
         render::<f32, _>(o, name, &build(&spec.with_seed(o.seed))?)?;
     }
-    Ok(())
+    render_wavelet_filtering(o)
 }
 
 fn main() -> ExitCode {
