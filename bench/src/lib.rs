@@ -10,11 +10,11 @@
 //! `src/bin/callgrind.rs` runs one under callgrind for instruction counts
 //! (`scripts/bench-peers.sh` does both).
 
-use bandnoise::Noise;
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
+use bandnoise::{Noise, ProjectedNoise};
 
 /// Samples per row (and rows in the timed grid).
 pub const N: usize = 1024;
@@ -58,7 +58,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 11] = [
+pub const FUNCTIONS: [&str; 13] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -69,6 +69,8 @@ pub const FUNCTIONS: [&str; 11] = [
     "value-2d",
     "wavelet-2d",
     "wavelet-3d",
+    "wavelet-projected-axis",
+    "wavelet-projected-oblique",
     "fbm6-perlin-3d",
 ];
 
@@ -139,6 +141,16 @@ impl Layout {
         Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample(at::<D>(x, y))))
     }
 
+    /// Point evaluation of `noise` projected along `normal` over the grid, in 3D (no batch
+    /// path: projection has none).
+    pub fn projected<No: ProjectedNoise<f32> + 'static>(self, noise: No, normal: [f32; 3]) -> Run {
+        Box::new(move |rows, out| {
+            self.points(rows, out, |x, y| {
+                noise.sample_projected(at::<3>(x, y), normal)
+            })
+        })
+    }
+
     /// A peer's 2D function of `f32` coordinates.
     fn peer2(self, f: impl Fn(f32, f32) -> f32 + 'static) -> Run {
         Box::new(move |rows, out| self.points(rows, out, &f))
@@ -198,6 +210,12 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("wavelet-2d", "bandnoise-batch") => l.batch::<_, 2>(Wavelet::new(0, &TILE2)),
         ("wavelet-3d", "bandnoise") => l.point::<_, 3>(Wavelet::new(0, &TILE3)),
         ("wavelet-3d", "bandnoise-batch") => l.batch::<_, 3>(Wavelet::new(0, &TILE3)),
+        ("wavelet-projected-axis", "bandnoise") => {
+            l.projected(Wavelet::new(0, &TILE3), [0.0, 0.0, 1.0])
+        }
+        ("wavelet-projected-oblique", "bandnoise") => {
+            l.projected(Wavelet::new(0, &TILE3), [0.48, 0.6, 0.64])
+        }
         ("fbm6-perlin-3d", "bandnoise") => l.point::<_, 3>(fbm()),
         ("fbm6-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(fbm()),
 
@@ -281,13 +299,17 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
 }
 
 /// The function whose fastest peer a bandnoise-only function is compared with: mNoise, wavelet
-/// noise and Perlin noise with its per-seed table (`TabledPerlin`) against the peers' Perlin
-/// noise of the same dimension.
+/// noise (projected noise too, against 3D) and Perlin noise with its per-seed table
+/// (`TabledPerlin`) against the peers' Perlin noise of the same dimension.
 #[must_use]
 pub fn peer_function(function: &str) -> &str {
     match function {
         "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" => "perlin-2d",
-        "tabled-perlin-3d" | "mnoise-3d" | "wavelet-3d" => "perlin-3d",
+        "tabled-perlin-3d"
+        | "mnoise-3d"
+        | "wavelet-3d"
+        | "wavelet-projected-axis"
+        | "wavelet-projected-oblique" => "perlin-3d",
         f => f,
     }
 }
