@@ -338,12 +338,31 @@ pub(crate) fn tile_index<const D: usize>(
     n: usize,
 ) -> usize {
     let mut index = 0;
-    for (a, (&l, &shift)) in local_plus_n.iter().zip(&place.shift).enumerate() {
-        let (target, flip) = axis_map::<D>(place.variant, a);
+    for (a, &l) in local_plus_n.iter().enumerate() {
+        let (stride, flip, shift) = place.axis(a, n);
         let t = (l + shift) % n;
-        index += (if flip { n - 1 - t } else { t }) * [1, n, n * n][target];
+        index += (if flip { n - 1 - t } else { t }) * stride;
     }
     index
+}
+
+impl<const D: usize> Placement<D> {
+    /// How output axis `a` reads the tile in this placement: the stride of the tile axis it
+    /// reads, whether it runs backwards, and its shift. Local index `l` (in `[−h, n + h)`,
+    /// passed plus `n`) lands at `(l + shift) mod n`, reversed if it runs backwards, times
+    /// the stride.
+    #[inline]
+    pub(crate) fn axis(&self, a: usize, n: usize) -> (usize, bool, usize) {
+        let (target, flip) = axis_map::<D>(self.variant, a);
+        // A match, not `[1, n, n²][target]`: the optimiser cannot see that a target read
+        // from `PERMUTATIONS3` is below 3, and the index would keep a panic path.
+        let stride = match target {
+            0 => 1,
+            1 => n,
+            _ => n * n,
+        };
+        (stride, flip, self.shift[a])
+    }
 }
 
 /// The flat-index contribution of coefficient `j` along each axis, per lane, in the block

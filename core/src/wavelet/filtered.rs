@@ -35,14 +35,15 @@
 use crate::Real;
 
 use super::band::{TileData, Wavelet};
-use super::projected::Placements;
+use super::projected::{COMPACT, Placements};
+use super::window::{WIDTH, Window};
 
 /// Coefficients per pixel up to which a band is sampled plainly.
 const PLAIN: f32 = 0.25;
 /// Coefficients per pixel from which a band fades out, and past which it is left out.
 const FADE: [f32; 2] = [3.0, 4.0];
 /// The most coefficients the widened basis reaches along an axis: `|d| < 3/2 + w/2 ≤ 7/2`.
-const REACH: usize = 8;
+const REACH: usize = WIDTH;
 
 /// How a band is rendered for a footprint of `widths` coefficients along each axis: `None`
 /// plainly, else the fade (1 down to 0) of the box-widened band.
@@ -142,6 +143,19 @@ impl<T> Wavelet<'_, T> {
     where
         T: TileData<D>,
     {
+        self.widened_by::<R, D, COMPACT>(p, widths)
+    }
+
+    /// [`widened`](Self::widened), each coefficient found on its own with `COMPACT_PATH`,
+    /// through a [`Window`] otherwise (the same values).
+    pub(crate) fn widened_by<R: Real, const D: usize, const COMPACT_PATH: bool>(
+        &self,
+        p: [R; D],
+        widths: [f32; D],
+    ) -> R
+    where
+        T: TileData<D>,
+    {
         let mut weights = [[R::ZERO; REACH]; D];
         let mut first = [0i32; D];
         let mut count = [0usize; D];
@@ -150,8 +164,9 @@ impl<T> Wavelet<'_, T> {
         }
         let (n, h) = (T::SIZE as i32, self.half_width::<D>() as i32);
         let mut placements = Placements::new(core::array::from_fn(|a| {
-            first[a].wrapping_add(h).div_euclid(n).wrapping_sub(1)
+            first[a].wrapping_sub(h).div_euclid(n)
         }));
+        let mut window = (!COMPACT_PATH).then(|| Window::new(self, first, count));
         let mut sum = R::ZERO;
         let mut index = [0usize; D];
         'coefficients: loop {
@@ -159,8 +174,14 @@ impl<T> Wavelet<'_, T> {
             for a in 0..D {
                 w = w.mul_rn(weights[a][index[a] % REACH]);
             }
-            let g: [i32; D] = core::array::from_fn(|a| first[a].wrapping_add(index[a] as i32));
-            sum = sum.saturating_add(w.mul_rn(self.fetch(g, &mut placements)));
+            let c = match &mut window {
+                Some(window) => window.coefficient(index),
+                None => {
+                    let g = core::array::from_fn(|a| first[a].wrapping_add(index[a] as i32));
+                    self.fetch(g, &mut placements)
+                }
+            };
+            sum = sum.saturating_add(w.mul_rn(c));
             // The next coefficient, x fastest.
             for a in 0..D {
                 index[a] += 1;

@@ -67,6 +67,7 @@ pub(crate) use multiband::DEFAULT_BANDS;
 mod projected;
 mod quantized;
 mod tile;
+mod window;
 
 pub use band::{TileData, Tiling, Wavelet};
 pub use defaults::{DEFAULT_TILE_SEED, TILE2, TILE2_I16, TILE3, TILE3_I16};

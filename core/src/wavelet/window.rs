@@ -1,0 +1,217 @@
+//! A window of a band's coefficient grid, for the bases wider than a plain band's 3 per axis:
+//! the projected basis (`projected.rs`) and the box-widened basis (`filtered.rs`).
+//!
+//! With blended or varied tiling (§4.3), the coefficient at a global index is the tile read in
+//! the placement of the block that holds it or, in a blend zone, the blend-weighted sum of
+//! the blocks' coefficients along each axis that crosses one (`band.rs`). Found for each
+//! coefficient on its own (`Wavelet::fetch` in `projected.rs`), that costs per axis a
+//! division by the tile size and the blend weights' branches, and per block a placement
+//! lookup. A window resolves the per-axis part once per axis and offset (at most [`WIDTH`]
+//! offsets per axis) and each block's placement once, into per-axis parts of the tile's flat
+//! index, so reading a coefficient costs D − 1 additions and a load per block and, in a
+//! zone, the blend products.
+//!
+//! The values are those of `fetch`, bit for bit: the same blocks in the same order (x
+//! fastest), each read `t_b ω_x ω_y ω_z`, rounded in that order (the tests in `projected.rs`
+//! compare the two).
+
+use crate::Real;
+
+use super::band::{TileData, Wavelet, blend_weight};
+
+/// The most coefficients a window spans along an axis. The projected basis reaches
+/// `|d| < 3|n_a| + 3√((1 − n_a²)/2) + 1/256 < 3.7` along axis `a`, so at most 8 integers;
+/// the box-widened basis `|d| < 3/2 + w/2 ≤ 7/2`, also 8.
+pub(crate) const WIDTH: usize = 8;
+
+/// One offset of the window along one axis.
+#[derive(Clone, Copy, Debug)]
+struct Along<R> {
+    /// The first block that reaches the coefficient.
+    block: i32,
+    /// That block's slot, counted from the window's first block along the axis (0 or 1 when
+    /// the window is cached).
+    slot: usize,
+    /// The coefficient's local index in that block, plus the tile size `n` (in `[n − h,
+    /// 2n + h)` for a blend half-width `h`).
+    local: usize,
+    /// Whether the next block reaches it too (a blend zone).
+    zone: bool,
+    /// In a zone, its blend weights in the first block and the next.
+    blend: [R; 2],
+}
+
+/// The coefficients at global indices `first + k`, `0 ≤ k_a < count_a ≤` [`WIDTH`], of one
+/// band.
+pub(crate) struct Window<'w, 't, T, R, const D: usize> {
+    wavelet: &'w Wavelet<'t, T>,
+    /// The first block along each axis (slot 0).
+    base: [i32; D],
+    along: [[Along<R>; WIDTH]; D],
+    count: [usize; D],
+    /// Whether every coefficient lies in slot 0 or 1 along each axis (always, for tiles at
+    /// least `WIDTH − 1 + 2h` wide: the shipped tiles and the demo's), so that each of the
+    /// up to 2ᴰ blocks resolves its placement once, into `offsets`. Otherwise (tiles of 4 to
+    /// 14 coefficients, or a window that wraps around `i32`) each coefficient resolves its
+    /// blocks' placements itself.
+    cached: bool,
+    /// The blocks (numbered by their slots, bit `a` along axis `a`) whose `offsets` are filled.
+    ready: u8,
+    /// Per block, axis and offset `k_a`: the part of the tile's flat index that the
+    /// coefficient at offset `k_a` along axis `a` contributes when read in that block (where
+    /// the block reaches it).
+    offsets: [[[u32; WIDTH]; D]; 8],
+}
+
+impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
+    /// The window of `wavelet`'s coefficients from global index `first`, `count` along each
+    /// axis (at most [`WIDTH`]; more are not resolved, and read as offset `k mod WIDTH`).
+    #[inline(never)]
+    pub(crate) fn new(wavelet: &'w Wavelet<'t, T>, first: [i32; D], count: [usize; D]) -> Self {
+        let (n, h) = (T::SIZE as i32, wavelet.half_width::<D>() as i32);
+        let mut window = Window {
+            wavelet,
+            base: [0; D],
+            along: [[Along {
+                block: 0,
+                slot: 0,
+                local: 0,
+                zone: false,
+                blend: [R::ONE; 2],
+            }; WIDTH]; D],
+            count: count.map(|c| c.min(WIDTH)),
+            cached: true,
+            ready: 0,
+            offsets: [[[0; WIDTH]; D]; 8],
+        };
+        for (a, &first) in first.iter().enumerate() {
+            for k in 0..window.count[a] % (WIDTH + 1) {
+                // Block q reaches coefficients [qn − h, qn + n + h): u = g + h puts its start
+                // at qn, and the zone where q − 1 fades into q is r < 2h.
+                let u = first.wrapping_add(k as i32).wrapping_add(h);
+                let (q, r) = (u.div_euclid(n), u.rem_euclid(n));
+                let zone = r < 2 * h;
+                let (block, local) = if zone {
+                    (q.wrapping_sub(1), (r + 2 * n - h) as usize)
+                } else {
+                    (q, (r + n - h) as usize)
+                };
+                if k == 0 {
+                    window.base[a] = block;
+                }
+                let slot = block.wrapping_sub(window.base[a]) as u32 as usize;
+                window.cached &= slot + zone as usize <= 1;
+                let along = &mut window.along[a][k % WIDTH];
+                (along.block, along.slot, along.local, along.zone) = (block, slot, local, zone);
+                if zone {
+                    let (n, h) = (n as usize, h as usize);
+                    along.blend = [blend_weight(local, n, h), blend_weight(local - n, n, h)];
+                }
+            }
+        }
+        window
+    }
+
+    /// The coefficient at offsets `k`: `Σ_b t_b ω_x ω_y ω_z` over the (up to 2ᴰ) blocks `b`
+    /// that reach it, each read in its placement and weighted by its blend weights (rounded
+    /// in that order), in the blocks' order (x fastest).
+    #[inline]
+    pub(crate) fn coefficient(&mut self, k: [usize; D]) -> R {
+        // The axes in a blend zone, and the coefficient's first block (its slots).
+        let (mut zones, mut first) = (0, 0);
+        for (a, &k) in k.iter().enumerate() {
+            let along = &self.along[a][k % WIDTH];
+            zones |= (along.zone as usize) << a;
+            first |= along.slot << a;
+        }
+        if !self.cached {
+            return self.alone(k, zones);
+        }
+        let mut value = R::ZERO;
+        // Each subset m of the zone axes, in increasing order (x fastest): the blocks m past
+        // the first (a zone's first slot is 0, so their slots are first | m).
+        let mut m = 0;
+        loop {
+            let block = (first | m) % 8;
+            if self.ready >> block & 1 == 0 {
+                self.resolve(block);
+            }
+            let offsets = &self.offsets[block];
+            let index = (0..D).fold(0, |i, a| i + offsets[a][k[a] % WIDTH]);
+            let mut c: R = self.wavelet.tile().flat(index as usize);
+            if zones != 0 {
+                for (a, &k) in k.iter().enumerate() {
+                    let along = &self.along[a][k % WIDTH];
+                    if along.zone {
+                        c = c.mul_fraction(along.blend[m >> a & 1]);
+                    }
+                }
+            }
+            value = value.saturating_add(c);
+            if m == zones {
+                return value;
+            }
+            m = m.wrapping_sub(zones) & zones;
+        }
+    }
+
+    /// Resolves the placement of the block in slots `block` (bit `a` along axis `a`) into its
+    /// offsets, for every offset of the window the block reaches. Out of line: a sample calls
+    /// it once per block.
+    #[inline(never)]
+    fn resolve(&mut self, block: usize) {
+        let n = T::SIZE;
+        let place = self.wavelet.placement(core::array::from_fn(|a| {
+            self.base[a].wrapping_add((block >> a & 1) as i32)
+        }));
+        for a in 0..D {
+            let (stride, flip, shift) = place.axis(a, n);
+            let slot = block >> a & 1;
+            let along = self.along[a].iter().take(self.count[a]);
+            for (o, along) in self.offsets[block % 8][a].iter_mut().zip(along) {
+                // The block reaches the coefficient if it is the coefficient's first block, or
+                // the next one in a zone; m is how many blocks past the first it is.
+                let Some(m) = slot.checked_sub(along.slot) else {
+                    continue;
+                };
+                if m == 0 || (m == 1 && along.zone) {
+                    let t = (along.local - m * n + shift) % n;
+                    *o = ((if flip { n - 1 - t } else { t }) * stride) as u32;
+                }
+            }
+        }
+        self.ready |= 1 << block;
+    }
+
+    /// [`coefficient`](Self::coefficient) with each block's placement resolved on its own:
+    /// the windows whose blocks cannot be cached by slot.
+    #[inline(never)]
+    fn alone(&self, k: [usize; D], zones: usize) -> R {
+        let n = T::SIZE;
+        let along: [&Along<R>; D] = core::array::from_fn(|a| &self.along[a][k[a] % WIDTH]);
+        let mut value = R::ZERO;
+        let mut m = 0;
+        loop {
+            let place = self.wavelet.placement(core::array::from_fn(|a| {
+                along[a].block.wrapping_add((m >> a & 1) as i32)
+            }));
+            let mut index = 0;
+            for (a, along) in along.iter().enumerate() {
+                let (stride, flip, shift) = place.axis(a, n);
+                let t = (along.local - (m >> a & 1) * n + shift) % n;
+                index += (if flip { n - 1 - t } else { t }) * stride;
+            }
+            let mut c: R = self.wavelet.tile().flat(index);
+            for (a, along) in along.iter().enumerate() {
+                if along.zone {
+                    c = c.mul_fraction(along.blend[m >> a & 1]);
+                }
+            }
+            value = value.saturating_add(c);
+            if m == zones {
+                return value;
+            }
+            m = m.wrapping_sub(zones) & zones;
+        }
+    }
+}
