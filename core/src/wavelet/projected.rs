@@ -298,9 +298,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let mut placements = Placements::new(core::array::from_fn(|a| {
             cell[a].wrapping_add(kmin[a]).wrapping_sub(h).div_euclid(n)
         }));
-        let mut sum = R::ZERO;
-        // G_a of the doc comment.
-        let mut partial = [R::ZERO; 3];
+        let mut sums = Sums::<R, GRADIENT>::default();
         for kz in kmin[2]..=kmax[2] {
             for ky in kmin[1]..=kmax[1] {
                 for kx in kmin[0]..=kmax[0] {
@@ -312,53 +310,79 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         three_halves - d[a] + nrm[a].mul_rn(dot).mul_rn(half)
                     });
                     let b = t.map(bspline);
-                    let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
-                    // A weight of 0 adds nothing to the value, but the gradient skips only
-                    // coefficients outside the support (0, 3) on some axis: B(t) = t²/2 rounds
-                    // to 0 in fixed point for t < 2⁻⁸, where B' = t still counts.
-                    let skip = if GRADIENT {
-                        t.iter().any(|&t| t <= R::ZERO || t >= R::from_i32(3))
-                    } else {
-                        weight == R::ZERO
-                    };
-                    if skip {
+                    if !Sums::<R, GRADIENT>::counts(&t, &b) {
                         continue;
                     }
                     let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
-                    let c = self.fetch(g, &mut placements);
-                    // Saturating: the weights sum to less than 3, so a tile whose
-                    // coefficients exceed a third of fixed point's range could overflow.
-                    sum = sum.saturating_add(weight.mul_rn(c));
-                    if GRADIENT {
-                        let db = t.map(bspline_derivative);
-                        let terms = [
-                            db[0].mul_rn(b[1]).mul_rn(b[2]),
-                            b[0].mul_rn(db[1]).mul_rn(b[2]),
-                            b[0].mul_rn(b[1]).mul_rn(db[2]),
-                        ];
-                        for (ga, term) in partial.iter_mut().zip(terms) {
-                            *ga = ga.saturating_add(term.mul_rn(c));
-                        }
-                    }
+                    sums.add(t, b, self.fetch(g, &mut placements));
                 }
             }
         }
-        if !GRADIENT {
-            return (sum.canonical(), [R::ZERO; 3]);
+        sums.finish(nrm)
+    }
+}
+
+/// A projected sum `Σ_c w(c) n_c` and, with `GRADIENT`, the `G_a` of
+/// [`Wavelet::projected`]'s doc comment, accumulated in the compact path's order.
+#[derive(Default)]
+struct Sums<R, const GRADIENT: bool> {
+    value: R,
+    partial: [R; 3],
+}
+
+impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
+    /// Whether the coefficient with basis arguments `t` and B-splines `b` counts. A weight of
+    /// 0 adds nothing to the value, but the gradient skips only coefficients outside the
+    /// support (0, 3) on some axis: B(t) = t²/2 rounds to 0 in fixed point for t < 2⁻⁸,
+    /// where B' = t still counts.
+    #[inline]
+    fn counts(t: &[R; 3], b: &[R; 3]) -> bool {
+        if GRADIENT {
+            t.iter().all(|&t| t > R::ZERO && t < R::from_i32(3))
+        } else {
+            R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]) != R::ZERO
         }
-        // n (n·G)/2 − G, saturating throughout (fixed point's G may have saturated).
+    }
+
+    /// Adds coefficient `c` with basis arguments `t` and B-splines `b`.
+    #[inline]
+    fn add(&mut self, t: [R; 3], b: [R; 3], c: R) {
+        let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
+        // Saturating: the weights sum to less than 3, so a tile whose coefficients exceed a
+        // third of fixed point's range could overflow.
+        self.value = self.value.saturating_add(weight.mul_rn(c));
+        if GRADIENT {
+            let db = t.map(bspline_derivative);
+            let terms = [
+                db[0].mul_rn(b[1]).mul_rn(b[2]),
+                b[0].mul_rn(db[1]).mul_rn(b[2]),
+                b[0].mul_rn(b[1]).mul_rn(db[2]),
+            ];
+            for (ga, term) in self.partial.iter_mut().zip(terms) {
+                *ga = ga.saturating_add(term.mul_rn(c));
+            }
+        }
+    }
+
+    /// The value and, with `GRADIENT`, the gradient `n (n·G)/2 − G` (otherwise zeros).
+    #[inline]
+    fn finish(self, nrm: [R; 3]) -> (R, [R; 3]) {
+        if !GRADIENT {
+            return (self.value.canonical(), [R::ZERO; 3]);
+        }
+        // Saturating throughout (fixed point's G may have saturated).
         let along = nrm
             .iter()
-            .zip(partial)
+            .zip(self.partial)
             .fold(R::ZERO, |acc, (na, ga)| acc.saturating_add(na.mul_rn(ga)))
-            .mul_rn(half);
+            .mul_rn(R::from_ratio(1, 1));
         let gradient = core::array::from_fn(|a| {
             nrm[a]
                 .mul_rn(along)
-                .saturating_add(partial[a].saturating_mul(-R::ONE))
+                .saturating_add(self.partial[a].saturating_mul(-R::ONE))
                 .canonical()
         });
-        (sum.canonical(), gradient)
+        (self.value.canonical(), gradient)
     }
 }
 
@@ -480,32 +504,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             }
         }
         let mut window = Window::new(self, first, count);
-        let mut sum = R::ZERO;
-        let mut partial = [R::ZERO; 3];
-        let mut add = |t: [R; 3], b: [R; 3], c: R| {
-            let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
-            sum = sum.saturating_add(weight.mul_rn(c));
-            if GRADIENT {
-                let db = t.map(bspline_derivative);
-                let terms = [
-                    db[0].mul_rn(b[1]).mul_rn(b[2]),
-                    b[0].mul_rn(db[1]).mul_rn(b[2]),
-                    b[0].mul_rn(b[1]).mul_rn(db[2]),
-                ];
-                for (ga, term) in partial.iter_mut().zip(terms) {
-                    *ga = ga.saturating_add(term.mul_rn(c));
-                }
-            }
-        };
-        // The compact path skips a coefficient whose weight is 0 (for the gradient, one with
-        // t outside (0, 3) on some axis, where B rounds to 0 only in fixed point).
-        let skip = |t: &[R; 3], b: &[R; 3]| {
-            if GRADIENT {
-                t.iter().any(|&t| t <= R::ZERO || t >= three)
-            } else {
-                R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]) == R::ZERO
-            }
-        };
+        let mut sums = Sums::<R, GRADIENT>::default();
         if nrm.iter().filter(|&&x| x == R::ZERO).count() == 2 {
             let mut t = [[R::ZERO; WIDTH]; 3];
             let mut support = [0..0, 0..0, 0..0];
@@ -529,8 +528,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         let k = [jx, jy, jz].map(|j| j % WIDTH);
                         let t = [t[0][k[0]], t[1][k[1]], t[2][k[2]]];
                         let b = [b[0][k[0]], b[1][k[1]], b[2][k[2]]];
-                        if !skip(&t, &b) {
-                            add(t, b, window.coefficient(k));
+                        if Sums::<R, GRADIENT>::counts(&t, &b) {
+                            sums.add(t, b, window.coefficient(k));
                         }
                     }
                 }
@@ -547,29 +546,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     for jx in oblique.range(t_at(0)) {
                         let t = t_at(jx);
                         let b = t.map(bspline);
-                        if !skip(&t, &b) {
-                            add(t, b, window.coefficient([jx, jy, jz]));
+                        if Sums::<R, GRADIENT>::counts(&t, &b) {
+                            sums.add(t, b, window.coefficient([jx, jy, jz]));
                         }
                     }
                 }
             }
         }
-        if !GRADIENT {
-            return (sum.canonical(), [R::ZERO; 3]);
-        }
-        // n (n·G)/2 − G, saturating throughout (fixed point's G may have saturated).
-        let along = nrm
-            .iter()
-            .zip(partial)
-            .fold(R::ZERO, |acc, (na, ga)| acc.saturating_add(na.mul_rn(ga)))
-            .mul_rn(half);
-        let gradient = core::array::from_fn(|a| {
-            nrm[a]
-                .mul_rn(along)
-                .saturating_add(partial[a].saturating_mul(-R::ONE))
-                .canonical()
-        });
-        (sum.canonical(), gradient)
+        sums.finish(nrm)
     }
 }
 

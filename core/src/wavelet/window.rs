@@ -127,18 +127,32 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
         if !self.cached {
             return self.alone(k, zones);
         }
+        // The block m past the first: a zone's first slot is 0, so its slots are first | m.
+        self.blended(k, zones, |window, m| {
+            let block = (first | m) % 8;
+            if window.ready >> block & 1 == 0 {
+                window.resolve(block);
+            }
+            let offsets = &window.offsets[block];
+            (0..D).fold(0, |i, a| i + offsets[a][k[a] % WIDTH] as usize)
+        })
+    }
+
+    /// `Σ_m t_m ω_x ω_y ω_z` over each subset `m` of the zone axes in increasing order (x
+    /// fastest), `t_m` the tile at `index(self, m)`, the flat index of the coefficient at
+    /// offsets `k` in the block `m` past its first (bit `a` along axis `a`).
+    #[inline]
+    fn blended(
+        &mut self,
+        k: [usize; D],
+        zones: usize,
+        mut index: impl FnMut(&mut Self, usize) -> usize,
+    ) -> R {
         let mut value = R::ZERO;
-        // Each subset m of the zone axes, in increasing order (x fastest): the blocks m past
-        // the first (a zone's first slot is 0, so their slots are first | m).
         let mut m = 0;
         loop {
-            let block = (first | m) % 8;
-            if self.ready >> block & 1 == 0 {
-                self.resolve(block);
-            }
-            let offsets = &self.offsets[block];
-            let index = (0..D).fold(0, |i, a| i + offsets[a][k[a] % WIDTH]);
-            let mut c: R = self.wavelet.tile().flat(index as usize);
+            let i = index(self, m);
+            let mut c: R = self.wavelet.tile().flat(i);
             if zones != 0 {
                 for (a, &k) in k.iter().enumerate() {
                     let along = &self.along[a][k % WIDTH];
@@ -186,13 +200,11 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
     /// [`coefficient`](Self::coefficient) with each block's placement resolved on its own:
     /// the windows whose blocks cannot be cached by slot.
     #[inline(never)]
-    fn alone(&self, k: [usize; D], zones: usize) -> R {
+    fn alone(&mut self, k: [usize; D], zones: usize) -> R {
         let n = T::SIZE;
-        let along: [&Along<R>; D] = core::array::from_fn(|a| &self.along[a][k[a] % WIDTH]);
-        let mut value = R::ZERO;
-        let mut m = 0;
-        loop {
-            let place = self.wavelet.placement(core::array::from_fn(|a| {
+        self.blended(k, zones, |window, m| {
+            let along: [&Along<R>; D] = core::array::from_fn(|a| &window.along[a][k[a] % WIDTH]);
+            let place = window.wavelet.placement(core::array::from_fn(|a| {
                 along[a].block.wrapping_add((m >> a & 1) as i32)
             }));
             let mut index = 0;
@@ -201,17 +213,7 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
                 let t = (along.local - (m >> a & 1) * n + shift) % n;
                 index += (if flip { n - 1 - t } else { t }) * stride;
             }
-            let mut c: R = self.wavelet.tile().flat(index);
-            for (a, along) in along.iter().enumerate() {
-                if along.zone {
-                    c = c.mul_fraction(along.blend[m >> a & 1]);
-                }
-            }
-            value = value.saturating_add(c);
-            if m == zones {
-                return value;
-            }
-            m = m.wrapping_sub(zones) & zones;
-        }
+            index
+        })
     }
 }
