@@ -509,7 +509,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             let mut t = [[R::ZERO; WIDTH]; 3];
             let mut support = [0..0, 0..0, 0..0];
             for a in 0..3 {
-                // t rises with the offset: the offsets with t in (0, 3) are consecutive.
+                // t rises with the offset, so the offsets with t in (0, 3) are consecutive
+                // (each is still tested, as the compact path tests it).
                 let (mut lo, mut hi) = (count[a], 0);
                 for j in 0..count[a] {
                     let j = j % WIDTH;
