@@ -51,9 +51,9 @@ pub(crate) struct Window<'w, 't, T, R, const D: usize> {
     count: [usize; D],
     /// Whether every coefficient lies in slot 0 or 1 along each axis (always, for tiles at
     /// least `WIDTH − 1 + 2h` wide: the shipped tiles and the demo's), so that each of the
-    /// up to 2ᴰ blocks resolves its placement once, into `offsets`. Otherwise (tiles of 4 to
-    /// 14 coefficients, or a window that wraps around `i32`) each coefficient resolves its
-    /// blocks' placements itself.
+    /// up to 2ᴰ blocks resolves its placement once, into `offsets`. Otherwise (tiles of 4 and
+    /// 6, of 12 and 14 when blended, or a window that wraps around `i32`) each coefficient
+    /// resolves its blocks' placements itself.
     cached: bool,
     /// The blocks (numbered by their slots, bit `a` along axis `a`) whose `offsets` are filled.
     ready: u8,
