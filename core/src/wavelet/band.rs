@@ -339,20 +339,36 @@ pub(crate) fn tile_index<const D: usize>(
 ) -> usize {
     let mut index = 0;
     for (a, &l) in local_plus_n.iter().enumerate() {
-        let (stride, flip, shift) = place.axis(a, n);
-        let t = (l + shift) % n;
-        index += (if flip { n - 1 - t } else { t }) * stride;
+        index += place.axis(a, n).offset(l, n);
     }
     index
 }
 
-impl<const D: usize> Placement<D> {
-    /// How output axis `a` reads the tile in this placement: the stride of the tile axis it
-    /// reads, whether it runs backwards, and its shift. Local index `l` (in `[−h, n + h)`,
-    /// passed plus `n`) lands at `(l + shift) mod n`, reversed if it runs backwards, times
-    /// the stride.
+/// How one output axis of a block reads the tile ([`Placement::axis`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct AxisMap {
+    /// The stride of the tile axis it reads.
+    stride: usize,
+    /// Whether it runs backwards.
+    flip: bool,
+    /// Its cyclic shift.
+    shift: usize,
+}
+
+impl AxisMap {
+    /// The part of the tile's flat index of local index `l` (in `[−h, n + h)`, passed plus
+    /// `n`): `(l + shift) mod n`, reversed if the axis runs backwards, times the stride.
     #[inline]
-    pub(crate) fn axis(&self, a: usize, n: usize) -> (usize, bool, usize) {
+    pub(crate) fn offset(&self, l_plus_n: usize, n: usize) -> usize {
+        let t = (l_plus_n + self.shift) % n;
+        (if self.flip { n - 1 - t } else { t }) * self.stride
+    }
+}
+
+impl<const D: usize> Placement<D> {
+    /// How output axis `a` reads the tile in this placement.
+    #[inline]
+    pub(crate) fn axis(&self, a: usize, n: usize) -> AxisMap {
         let (target, flip) = axis_map::<D>(self.variant, a);
         // A match, not `[1, n, n²][target]`: the optimiser cannot see that a target read
         // from `PERMUTATIONS3` is below 3, and the index would keep a panic path.
@@ -361,7 +377,26 @@ impl<const D: usize> Placement<D> {
             1 => n,
             _ => n * n,
         };
-        (stride, flip, self.shift[a])
+        AxisMap {
+            stride,
+            flip,
+            shift: self.shift[a],
+        }
+    }
+}
+
+/// The first block that reaches global coefficient `g` (block `q` reaches `[qn − h,
+/// qn + n + h)`), `g`'s local index in it plus `n` (in `[n + h, 2n + h)`), and whether the
+/// next block reaches `g` too (the blend zone where the first fades into the next).
+#[inline]
+pub(crate) fn first_block(g: i32, n: usize, h: usize) -> (i32, usize, bool) {
+    // u = g + h puts block q's start at qn; the zone is r < 2h.
+    let u = g.wrapping_add(h as i32);
+    let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
+    if r < 2 * h {
+        (q.wrapping_sub(1), r + 2 * n - h, true)
+    } else {
+        (q, r + n - h, false)
     }
 }
 

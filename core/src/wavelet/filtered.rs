@@ -163,10 +163,15 @@ impl<T> Wavelet<'_, T> {
             (first[a], count[a]) = axis_weights(p[a], widths[a], &mut weights[a]);
         }
         let (n, h) = (T::SIZE as i32, self.half_width::<D>() as i32);
-        let mut placements = Placements::new(core::array::from_fn(|a| {
-            first[a].wrapping_sub(h).div_euclid(n)
-        }));
-        let mut window = (!COMPACT_PATH).then(|| Window::new(self, first, count));
+        // Each coefficient found on its own (its blocks' placements cached by their place
+        // from the first block that reaches the first coefficient), or through a window.
+        let mut source = if COMPACT_PATH {
+            Source::Fetch(Placements::new(core::array::from_fn(|a| {
+                first[a].wrapping_sub(h).div_euclid(n)
+            })))
+        } else {
+            Source::Window(Window::new(self, first, count))
+        };
         let mut sum = R::ZERO;
         let mut index = [0usize; D];
         'coefficients: loop {
@@ -174,11 +179,11 @@ impl<T> Wavelet<'_, T> {
             for a in 0..D {
                 w = w.mul_rn(weights[a][index[a] % REACH]);
             }
-            let c = match &mut window {
-                Some(window) => window.coefficient(index),
-                None => {
+            let c = match &mut source {
+                Source::Window(window) => window.coefficient(index),
+                Source::Fetch(placements) => {
                     let g = core::array::from_fn(|a| first[a].wrapping_add(index[a] as i32));
-                    self.fetch(g, &mut placements)
+                    self.fetch(g, placements)
                 }
             };
             sum = sum.saturating_add(w.mul_rn(c));
@@ -194,6 +199,12 @@ impl<T> Wavelet<'_, T> {
         }
         sum.canonical()
     }
+}
+
+/// Where [`Wavelet::widened_by`] reads its coefficients.
+enum Source<'w, 't, T, R, const D: usize> {
+    Window(Window<'w, 't, T, R, D>),
+    Fetch(Placements<D>),
 }
 
 /// One band filtered by a sample's footprint: a band has one coefficient per unit, so the

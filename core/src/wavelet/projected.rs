@@ -22,7 +22,7 @@ use crate::{ProjectedNoise, Real};
 
 use core::ops::Range;
 
-use super::band::{Placement, TileData, Wavelet, blend_weight, tile_index};
+use super::band::{Placement, TileData, Wavelet, blend_weight, first_block, tile_index};
 use super::window::{WIDTH, Window};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
@@ -209,9 +209,10 @@ impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Wavelet<'_, T
     }
 }
 
-/// Block placements for the blocks per axis that a projected or filtered sample touches: at
-/// most 4 from the base (the block before the first coefficient's), as its at most 8
-/// coefficients and a blend zone's reach span at most 3 tile blocks for every tile size.
+/// Block placements for the blocks per axis that a projected or filtered sample touches, by
+/// their place from the base, the first block that reaches its first coefficient: its at most
+/// 8 coefficients per axis and a blend zone's reach (`8 − 1 + 2h < 2n`) span at most 3 tile
+/// blocks for every tile size.
 pub(crate) struct Placements<const D: usize> {
     base: [i32; D],
     cache: [[[Option<Placement<D>>; 3]; 3]; 3],
@@ -283,14 +284,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let mut kmax = [0i32; 3];
         for a in 0..3 {
             (cell[a], frac[a]) = p[a].split();
-            // support = 3|n_a| + 3 sqrt((1 − n_a²)/2), rounded up a little for safety.
-            let na = nrm[a].abs();
-            let s = R::from_i32(3).mul_rn(na)
-                + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(half).sqrt())
-                + R::from_ratio(1, 8);
-            let (lo, lo_frac) = (frac[a] - s).split();
-            kmin[a] = if lo_frac == R::ZERO { lo } else { lo + 1 };
-            kmax[a] = (frac[a] + s).split().0;
+            (kmin[a], kmax[a]) = support_box(frac[a], nrm[a]);
         }
         // Block q reaches coefficients [qn − h, qn + n + h): the first block that reaches
         // coefficient c is ⌊(c − h)/n⌋.
@@ -310,16 +304,30 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         three_halves - d[a] + nrm[a].mul_rn(dot).mul_rn(half)
                     });
                     let b = t.map(bspline);
-                    if !Sums::<R, GRADIENT>::counts(&t, &b) {
+                    let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) else {
                         continue;
-                    }
+                    };
                     let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
-                    sums.add(t, b, self.fetch(g, &mut placements));
+                    sums.add(weight, t, b, self.fetch(g, &mut placements));
                 }
             }
         }
         sums.finish(nrm)
     }
+}
+
+/// The offsets `kmin..=kmax` from the cell, along one axis, of the coefficients the projected
+/// basis can reach from fraction `frac` along a unit normal with component `na`: those within
+/// `3|n_a| + 3√((1 − n_a²)/2)` (rounded up a little for safety) of the point.
+#[inline]
+fn support_box<R: Real>(frac: R, na: R) -> (i32, i32) {
+    let na = na.abs();
+    let s = R::from_i32(3).mul_rn(na)
+        + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(R::from_ratio(1, 1)).sqrt())
+        + R::from_ratio(1, 8);
+    let (lo, lo_frac) = (frac - s).split();
+    let kmin = if lo_frac == R::ZERO { lo } else { lo + 1 };
+    (kmin, (frac + s).split().0)
 }
 
 /// A projected sum `Σ_c w(c) n_c` and, with `GRADIENT`, the `G_a` of
@@ -331,23 +339,25 @@ struct Sums<R, const GRADIENT: bool> {
 }
 
 impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
-    /// Whether the coefficient with basis arguments `t` and B-splines `b` counts. A weight of
-    /// 0 adds nothing to the value, but the gradient skips only coefficients outside the
-    /// support (0, 3) on some axis: B(t) = t²/2 rounds to 0 in fixed point for t < 2⁻⁸,
-    /// where B' = t still counts.
+    /// The basis weight `Π_a B(t_a)` of the coefficient with basis arguments `t` and
+    /// B-splines `b`, if it counts. A weight of 0 adds nothing to the value, but the gradient
+    /// skips only coefficients outside the support (0, 3) on some axis: B(t) = t²/2 rounds to
+    /// 0 in fixed point for t < 2⁻⁸, where B' = t still counts.
     #[inline]
-    fn counts(t: &[R; 3], b: &[R; 3]) -> bool {
-        if GRADIENT {
+    fn weight(t: &[R; 3], b: &[R; 3]) -> Option<R> {
+        let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
+        let counts = if GRADIENT {
             t.iter().all(|&t| t > R::ZERO && t < R::from_i32(3))
         } else {
-            R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]) != R::ZERO
-        }
+            weight != R::ZERO
+        };
+        counts.then_some(weight)
     }
 
-    /// Adds coefficient `c` with basis arguments `t` and B-splines `b`.
+    /// Adds coefficient `c` with basis weight `weight` ([`weight`](Self::weight)), basis
+    /// arguments `t` and B-splines `b`.
     #[inline]
-    fn add(&mut self, t: [R; 3], b: [R; 3], c: R) {
-        let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
+    fn add(&mut self, weight: R, t: [R; 3], b: [R; 3], c: R) {
         // Saturating: the weights sum to less than 3, so a tile whose coefficients exceed a
         // third of fixed point's range could overflow.
         self.value = self.value.saturating_add(weight.mul_rn(c));
@@ -406,13 +416,9 @@ impl<T> Wavelet<'_, T> {
         let mut local = [0usize; D];
         let mut count = [1usize; 3];
         for a in 0..D {
-            let u = g[a].wrapping_add(h as i32);
-            let (q, r) = (u.div_euclid(n as i32), u.rem_euclid(n as i32) as usize);
-            if r < 2 * h {
-                (first[a], local[a], count[a]) = (q.wrapping_sub(1), r + 2 * n - h, 2);
-            } else {
-                (first[a], local[a]) = (q, r + n - h);
-            }
+            let zone;
+            (first[a], local[a], zone) = first_block(g[a], n, h);
+            count[a] = 1 + zone as usize;
         }
         let mut value = R::ZERO;
         for mz in 0..count[2] {
@@ -481,14 +487,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let mut along = [[R::ZERO; WIDTH]; 3];
         for a in 0..3 {
             let (cell, frac) = p[a].split();
-            // The compact path's bounding box.
-            let na = nrm[a].abs();
-            let s = R::from_i32(3).mul_rn(na)
-                + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(half).sqrt())
-                + R::from_ratio(1, 8);
-            let (lo, lo_frac) = (frac - s).split();
-            let kmin = if lo_frac == R::ZERO { lo } else { lo + 1 };
-            let kmax = (frac + s).split().0;
+            let (kmin, kmax) = support_box(frac, nrm[a]);
             first[a] = cell.wrapping_add(kmin);
             // At most WIDTH (s < 3.7: at most 8 integers lie within it).
             count[a] = kmax
@@ -529,8 +528,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         let k = [jx, jy, jz].map(|j| j % WIDTH);
                         let t = [t[0][k[0]], t[1][k[1]], t[2][k[2]]];
                         let b = [b[0][k[0]], b[1][k[1]], b[2][k[2]]];
-                        if Sums::<R, GRADIENT>::counts(&t, &b) {
-                            sums.add(t, b, window.coefficient(k));
+                        if let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) {
+                            sums.add(weight, t, b, window.coefficient(k));
                         }
                     }
                 }
@@ -547,8 +546,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     for jx in oblique.range(t_at(0)) {
                         let t = t_at(jx);
                         let b = t.map(bspline);
-                        if Sums::<R, GRADIENT>::counts(&t, &b) {
-                            sums.add(t, b, window.coefficient([jx, jy, jz]));
+                        if let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) {
+                            sums.add(weight, t, b, window.coefficient([jx, jy, jz]));
                         }
                     }
                 }

@@ -17,7 +17,7 @@
 
 use crate::Real;
 
-use super::band::{TileData, Wavelet, blend_weight};
+use super::band::{TileData, Wavelet, blend_weight, first_block, tile_index};
 
 /// The most coefficients a window spans along an axis. The projected basis reaches
 /// `|d| < 3|n_a| + 3√((1 − n_a²)/2) + 1/256 < 3.7` along axis `a`, so at most 8 integers;
@@ -68,7 +68,7 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
     /// axis (at most [`WIDTH`]; more are not resolved, and read as offset `k mod WIDTH`).
     #[inline(never)]
     pub(crate) fn new(wavelet: &'w Wavelet<'t, T>, first: [i32; D], count: [usize; D]) -> Self {
-        let (n, h) = (T::SIZE as i32, wavelet.half_width::<D>() as i32);
+        let (n, h) = (T::SIZE, wavelet.half_width::<D>());
         let mut window = Window {
             wavelet,
             base: [0; D],
@@ -85,17 +85,8 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
             offsets: [[[0; WIDTH]; D]; 8],
         };
         for (a, &first) in first.iter().enumerate() {
-            for k in 0..window.count[a] % (WIDTH + 1) {
-                // Block q reaches coefficients [qn − h, qn + n + h): u = g + h puts its start
-                // at qn, and the zone where q − 1 fades into q is r < 2h.
-                let u = first.wrapping_add(k as i32).wrapping_add(h);
-                let (q, r) = (u.div_euclid(n), u.rem_euclid(n));
-                let zone = r < 2 * h;
-                let (block, local) = if zone {
-                    (q.wrapping_sub(1), (r + 2 * n - h) as usize)
-                } else {
-                    (q, (r + n - h) as usize)
-                };
+            for k in 0..window.count[a] {
+                let (block, local, zone) = first_block(first.wrapping_add(k as i32), n, h);
                 if k == 0 {
                     window.base[a] = block;
                 }
@@ -104,7 +95,6 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
                 let along = &mut window.along[a][k % WIDTH];
                 (along.block, along.slot, along.local, along.zone) = (block, slot, local, zone);
                 if zone {
-                    let (n, h) = (n as usize, h as usize);
                     along.blend = [blend_weight(local, n, h), blend_weight(local - n, n, h)];
                 }
             }
@@ -179,7 +169,7 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
             self.base[a].wrapping_add((block >> a & 1) as i32)
         }));
         for a in 0..D {
-            let (stride, flip, shift) = place.axis(a, n);
+            let axis = place.axis(a, n);
             let slot = block >> a & 1;
             let along = self.along[a].iter().take(self.count[a]);
             for (o, along) in self.offsets[block % 8][a].iter_mut().zip(along) {
@@ -189,8 +179,7 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
                     continue;
                 };
                 if m == 0 || (m == 1 && along.zone) {
-                    let t = (along.local - m * n + shift) % n;
-                    *o = ((if flip { n - 1 - t } else { t }) * stride) as u32;
+                    *o = axis.offset(along.local - m * n, n) as u32;
                 }
             }
         }
@@ -207,13 +196,8 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
             let place = window.wavelet.placement(core::array::from_fn(|a| {
                 along[a].block.wrapping_add((m >> a & 1) as i32)
             }));
-            let mut index = 0;
-            for (a, along) in along.iter().enumerate() {
-                let (stride, flip, shift) = place.axis(a, n);
-                let t = (along.local - (m >> a & 1) * n + shift) % n;
-                index += (if flip { n - 1 - t } else { t }) * stride;
-            }
-            index
+            let local = core::array::from_fn(|a| along[a].local - (m >> a & 1) * n);
+            tile_index(local, &place, n)
         })
     }
 }
