@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Builds the browser demo into web/: installs what is missing (the pinned Rust toolchain and
-# targets, wasm-bindgen-cli at the version Cargo.lock pins, the npm tools in tests/e2e), builds
-# the wasm crate (release, simd128), runs wasm-bindgen (--target web) and wasm-opt, and copies
-# the simplex-noise peer for the benchmark page. Prints the module's size.
+# Builds the browser demo and the benchmark page into web/: installs what is missing (the pinned
+# Rust toolchain and targets, wasm-bindgen-cli at the version Cargo.lock pins, the npm tools in
+# tests/e2e), builds the two wasm crates (release, simd128), runs wasm-bindgen (--target web) and
+# wasm-opt on each, and copies the simplex-noise peer for the benchmark page. Prints the
+# modules' sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -21,16 +22,21 @@ if ! (cd tests/e2e && npm ls --depth=0 >/dev/null 2>&1); then
     (cd tests/e2e && npm ci --no-audit --no-fund)
 fi
 
-cargo build -p bandnoise-wasm --profile web --target wasm32-unknown-unknown
-rm -rf web/pkg
-wasm-bindgen target/wasm32-unknown-unknown/web/bandnoise_wasm.wasm \
-    --target web --out-dir web/pkg --no-typescript
-# The features rustc's wasm32 target emits, plus simd128; not -all, which lets wasm-opt use
-# encodings Chromium does not enable by default.
-tests/e2e/node_modules/.bin/wasm-opt -Os --strip-producers --strip-target-features \
-    --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
-    --enable-mutable-globals --enable-multivalue --enable-reference-types \
-    web/pkg/bandnoise_wasm_bg.wasm -o web/pkg/bandnoise_wasm_bg.wasm
+# The demo's module (web/pkg) and the benchmark page's (web/pkg-bench), in one cargo run.
+cargo build -p bandnoise-wasm -p bandnoise-wasm-bench --profile web --target wasm32-unknown-unknown
+for crate in bandnoise_wasm:pkg bandnoise_wasm_bench:pkg-bench; do
+    name=${crate%%:*} dir=web/${crate#*:}
+    rm -rf "$dir"
+    wasm-bindgen "target/wasm32-unknown-unknown/web/$name.wasm" \
+        --target web --out-dir "$dir" --no-typescript
+    # The features rustc's wasm32 target emits, plus simd128; not -all, which lets wasm-opt use
+    # encodings Chromium does not enable by default.
+    tests/e2e/node_modules/.bin/wasm-opt -Os --strip-producers --strip-target-features \
+        --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
+        --enable-mutable-globals --enable-multivalue --enable-reference-types \
+        "$dir/${name}_bg.wasm" -o "$dir/${name}_bg.wasm"
+done
 mkdir -p web/vendor
 cp tests/e2e/node_modules/simplex-noise/dist/esm/simplex-noise.js web/vendor/
-echo "web/pkg/bandnoise_wasm_bg.wasm: $(wc -c < web/pkg/bandnoise_wasm_bg.wasm) bytes after wasm-opt"
+echo "web/pkg/bandnoise_wasm_bg.wasm (demo): $(wc -c < web/pkg/bandnoise_wasm_bg.wasm) bytes after wasm-opt"
+echo "web/pkg-bench/bandnoise_wasm_bench_bg.wasm (benchmark page): $(wc -c < web/pkg-bench/bandnoise_wasm_bench_bg.wasm) bytes after wasm-opt"

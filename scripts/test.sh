@@ -47,7 +47,7 @@ bash scripts/build-web.sh
 # The module's budget (issue 4): a page that loads fast.
 size=$(wc -c < web/pkg/bandnoise_wasm_bg.wasm)
 if [ "$size" -gt 150000 ]; then
-    echo "error: the wasm module is $size bytes, over its budget of 150,000 (README, Browser)" >&2
+    echo "error: the demo's wasm module is $size bytes, over its budget of 150,000 (README, Browser)" >&2
     exit 1
 fi
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown

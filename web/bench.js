@@ -1,7 +1,7 @@
 // Times bandnoise's 2D Perlin, mNoise and wavelet noise (wasm), point by point and through the
 // batch API (fill_grid, simd128), against the npm simplex-noise package (JavaScript) over the
 // same grid, and reports the ratios in window.benchResults.
-import init, { bench_sum } from './pkg/bandnoise_wasm.js';
+import init, { bench_sum } from './pkg-bench/bandnoise_wasm_bench.js';
 import { createNoise2D } from './vendor/simplex-noise.js';
 
 const COUNT = 1 << 20;

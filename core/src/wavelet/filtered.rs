@@ -35,7 +35,6 @@
 use crate::Real;
 
 use super::band::{TileData, Wavelet};
-use super::projected::{COMPACT, Placements};
 use super::window::{WIDTH, Window};
 
 /// Coefficients per pixel up to which a band is sampled plainly.
@@ -139,19 +138,24 @@ impl<T> Wavelet<'_, T> {
     /// `Σ_c n_c Π_a (B ∗ box_{w_a})(p_a − c_a)`, for widths below [`FADE`]`[1]`. Out of
     /// line: it is long, and off the plain sampling path.
     #[inline(never)]
-    fn widened<R: Real, const D: usize>(&self, p: [R; D], widths: [f32; D]) -> R
+    pub(crate) fn widened<R: Real, const D: usize>(&self, p: [R; D], widths: [f32; D]) -> R
     where
         T: TileData<D>,
     {
-        self.widened_by::<R, D, COMPACT>(p, widths)
+        self.widened_by(p, widths, |first, count| {
+            let mut window = Window::new(self, first, count);
+            move |k| window.coefficient(k)
+        })
     }
 
-    /// [`widened`](Self::widened), each coefficient found on its own with `COMPACT_PATH`,
-    /// through a [`Window`] otherwise (the same values).
-    pub(crate) fn widened_by<R: Real, const D: usize, const COMPACT_PATH: bool>(
+    /// [`widened`](Self::widened) with the coefficients at offsets `k` from global index
+    /// `first`, `count` along each axis, read through `open(first, count)`: a [`Window`], or in
+    /// tests the reference that finds each on its own (the same values).
+    pub(crate) fn widened_by<R: Real, const D: usize, S: FnMut([usize; D]) -> R>(
         &self,
         p: [R; D],
         widths: [f32; D],
+        open: impl FnOnce([i32; D], [usize; D]) -> S,
     ) -> R
     where
         T: TileData<D>,
@@ -162,16 +166,7 @@ impl<T> Wavelet<'_, T> {
         for a in 0..D {
             (first[a], count[a]) = axis_weights(p[a], widths[a], &mut weights[a]);
         }
-        let (n, h) = (T::SIZE as i32, self.half_width::<D>() as i32);
-        // Each coefficient found on its own (its blocks' placements cached by their place
-        // from the first block that reaches the first coefficient), or through a window.
-        let mut source = if COMPACT_PATH {
-            Source::Fetch(Placements::new(core::array::from_fn(|a| {
-                first[a].wrapping_sub(h).div_euclid(n)
-            })))
-        } else {
-            Source::Window(Window::new(self, first, count))
-        };
+        let mut coefficient = open(first, count);
         let mut sum = R::ZERO;
         let mut index = [0usize; D];
         'coefficients: loop {
@@ -179,13 +174,7 @@ impl<T> Wavelet<'_, T> {
             for a in 0..D {
                 w = w.mul_rn(weights[a][index[a] % REACH]);
             }
-            let c = match &mut source {
-                Source::Window(window) => window.coefficient(index),
-                Source::Fetch(placements) => {
-                    let g = core::array::from_fn(|a| first[a].wrapping_add(index[a] as i32));
-                    self.fetch(g, placements)
-                }
-            };
+            let c = coefficient(index);
             sum = sum.saturating_add(w.mul_rn(c));
             // The next coefficient, x fastest.
             for a in 0..D {
@@ -199,12 +188,6 @@ impl<T> Wavelet<'_, T> {
         }
         sum.canonical()
     }
-}
-
-/// Where [`Wavelet::widened_by`] reads its coefficients.
-enum Source<'w, 't, T, R, const D: usize> {
-    Window(Window<'w, 't, T, R, D>),
-    Fetch(Placements<D>),
 }
 
 /// One band filtered by a sample's footprint: a band has one coefficient per unit, so the

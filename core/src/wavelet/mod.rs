@@ -58,6 +58,8 @@
 //! tiling are in `bench/README.md`.
 
 mod band;
+#[cfg(test)]
+mod compact;
 mod constmath;
 mod defaults;
 mod erf;

@@ -10,19 +10,19 @@
 //! normal, unchanged across it.
 //!
 //! **Cost.** The basis is non-zero on a parallelepiped of volume 54 coefficients (27 over the
-//! determinant ½ of `I − n nᵀ/2`) inside a bounding box of up to 8³. The fast path
-//! ([`Wavelet::projected_fast`]) visits only the coefficients that can be non-zero (along an
+//! determinant ½ of `I − n nᵀ/2`) inside a bounding box of up to 8³. A sample
+//! (`Wavelet::projected_fast`) visits only the coefficients that can be non-zero (along an
 //! axis, the 3 × 3 × 6 product of per-axis supports; along an oblique normal, each row of the
 //! box clipped to the support) and reads them through a `Window`, which resolves each axis and
-//! each tile block once per sample instead of once per coefficient. The compact path
-//! ([`Wavelet::projected_compact`], the wasm demo's, for its size budget) visits the whole
-//! box and finds each coefficient on its own. Both give the same values, bit for bit.
+//! each tile block once per sample instead of once per coefficient. The tests hold it to a
+//! reference that visits the whole box and finds each coefficient on its own (`compact.rs`):
+//! the same values, bit for bit.
 
 use crate::{ProjectedNoise, Real};
 
 use core::ops::Range;
 
-use super::band::{Placement, TileData, Wavelet, blend_weight, first_block, tile_index};
+use super::band::{TileData, Wavelet};
 use super::window::{WIDTH, Window};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
@@ -209,26 +209,6 @@ impl<R: Real, T: TileData<3>> crate::ProjectedNoiseGradient<R> for Wavelet<'_, T
     }
 }
 
-/// Block placements for the blocks per axis that a projected or filtered sample touches, by
-/// their place from the base, the first block that reaches its first coefficient: its at most
-/// 8 coefficients per axis and a blend zone's reach (`8 − 1 + 2h < 2n`) span at most 3 tile
-/// blocks for every tile size.
-pub(crate) struct Placements<const D: usize> {
-    base: [i32; D],
-    cache: [[[Option<Placement<D>>; 3]; 3]; 3],
-}
-
-impl<const D: usize> Placements<D> {
-    /// An empty cache whose block slots start at `base` along each axis.
-    #[inline]
-    pub(crate) fn new(base: [i32; D]) -> Self {
-        Placements {
-            base,
-            cache: [[[None; 3]; 3]; 3],
-        }
-    }
-}
-
 impl<T: TileData<3>> Wavelet<'_, T> {
     /// A bound on `|sample_projected|`: three times the largest (blended) coefficient (the
     /// projected basis weights sum to 2 along an axis-aligned normal and stay below 3 for any
@@ -261,58 +241,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// gradient is `−G + n (n·G)/2`.
     #[inline]
     fn projected<R: Real, const GRADIENT: bool>(&self, p: [R; 3], nrm: [R; 3]) -> (R, [R; 3]) {
-        if COMPACT {
-            self.projected_compact::<R, GRADIENT>(p, nrm)
-        } else {
-            self.projected_fast::<R, GRADIENT>(p, nrm)
-        }
-    }
-
-    /// [`projected`](Self::projected) in little code: every coefficient of the basis's
-    /// bounding box, each found on its own ([`fetch`](Self::fetch)).
-    pub(crate) fn projected_compact<R: Real, const GRADIENT: bool>(
-        &self,
-        p: [R; 3],
-        nrm: [R; 3],
-    ) -> (R, [R; 3]) {
-        let n = T::SIZE as i32;
-        let half = R::from_ratio(1, 1);
-        let three_halves = R::from_ratio(3, 1);
-        let mut cell = [0i32; 3];
-        let mut frac = [R::ZERO; 3];
-        let mut kmin = [0i32; 3];
-        let mut kmax = [0i32; 3];
-        for a in 0..3 {
-            (cell[a], frac[a]) = p[a].split();
-            (kmin[a], kmax[a]) = support_box(frac[a], nrm[a]);
-        }
-        // Block q reaches coefficients [qn − h, qn + n + h): the first block that reaches
-        // coefficient c is ⌊(c − h)/n⌋.
-        let h = self.half_width::<3>() as i32;
-        let mut placements = Placements::new(core::array::from_fn(|a| {
-            cell[a].wrapping_add(kmin[a]).wrapping_sub(h).div_euclid(n)
-        }));
-        let mut sums = Sums::<R, GRADIENT>::default();
-        for kz in kmin[2]..=kmax[2] {
-            for ky in kmin[1]..=kmax[1] {
-                for kx in kmin[0]..=kmax[0] {
-                    let k = [kx, ky, kz];
-                    // p − c, small whatever p is: the fraction minus an integer offset.
-                    let d: [R; 3] = core::array::from_fn(|a| frac[a] - R::from_i32(k[a]));
-                    let dot = nrm[0].mul_rn(d[0]) + nrm[1].mul_rn(d[1]) + nrm[2].mul_rn(d[2]);
-                    let t: [R; 3] = core::array::from_fn(|a| {
-                        three_halves - d[a] + nrm[a].mul_rn(dot).mul_rn(half)
-                    });
-                    let b = t.map(bspline);
-                    let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) else {
-                        continue;
-                    };
-                    let g: [i32; 3] = core::array::from_fn(|a| cell[a].wrapping_add(k[a]));
-                    sums.add(weight, t, b, self.fetch(g, &mut placements));
-                }
-            }
-        }
-        sums.finish(nrm)
+        self.projected_fast::<R, GRADIENT>(p, nrm)
     }
 }
 
@@ -320,7 +249,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
 /// basis can reach from fraction `frac` along a unit normal with component `na`: those within
 /// `3|n_a| + 3√((1 − n_a²)/2)` (rounded up a little for safety) of the point.
 #[inline]
-fn support_box<R: Real>(frac: R, na: R) -> (i32, i32) {
+pub(super) fn support_box<R: Real>(frac: R, na: R) -> (i32, i32) {
     let na = na.abs();
     let s = R::from_i32(3).mul_rn(na)
         + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(R::from_ratio(1, 1)).sqrt())
@@ -331,9 +260,10 @@ fn support_box<R: Real>(frac: R, na: R) -> (i32, i32) {
 }
 
 /// A projected sum `Σ_c w(c) n_c` and, with `GRADIENT`, the `G_a` of
-/// [`Wavelet::projected`]'s doc comment, accumulated in the compact path's order.
+/// [`Wavelet::projected`]'s doc comment, accumulated in the
+/// reference's order (`compact.rs`): the whole box, x fastest.
 #[derive(Default)]
-struct Sums<R, const GRADIENT: bool> {
+pub(super) struct Sums<R, const GRADIENT: bool> {
     value: R,
     partial: [R; 3],
 }
@@ -344,7 +274,7 @@ impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
     /// skips only coefficients outside the support (0, 3) on some axis: B(t) = t²/2 rounds to
     /// 0 in fixed point for t < 2⁻⁸, where B' = t still counts.
     #[inline]
-    fn weight(t: &[R; 3], b: &[R; 3]) -> Option<R> {
+    pub(super) fn weight(t: &[R; 3], b: &[R; 3]) -> Option<R> {
         let weight = R::ONE.mul_rn(b[0]).mul_rn(b[1]).mul_rn(b[2]);
         let counts = if GRADIENT {
             t.iter().all(|&t| t > R::ZERO && t < R::from_i32(3))
@@ -357,7 +287,7 @@ impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
     /// Adds coefficient `c` with basis weight `weight` ([`weight`](Self::weight)), basis
     /// arguments `t` and B-splines `b`.
     #[inline]
-    fn add(&mut self, weight: R, t: [R; 3], b: [R; 3], c: R) {
+    pub(super) fn add(&mut self, weight: R, t: [R; 3], b: [R; 3], c: R) {
         // Saturating: the weights sum to less than 3, so a tile whose coefficients exceed a
         // third of fixed point's range could overflow.
         self.value = self.value.saturating_add(weight.mul_rn(c));
@@ -376,7 +306,7 @@ impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
 
     /// The value and, with `GRADIENT`, the gradient `n (n·G)/2 − G` (otherwise zeros).
     #[inline]
-    fn finish(self, nrm: [R; 3]) -> (R, [R; 3]) {
+    pub(super) fn finish(self, nrm: [R; 3]) -> (R, [R; 3]) {
         if !GRADIENT {
             return (self.value.canonical(), [R::ZERO; 3]);
         }
@@ -396,74 +326,6 @@ impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
     }
 }
 
-impl<T> Wavelet<'_, T> {
-    /// The coefficient at global index `g`: `Σ ω_b t_b(g)` over the (up to 2ᴰ) blocks `b` that
-    /// reach it, each read in its placement and weighted by its blend weights.
-    #[inline]
-    pub(crate) fn fetch<R: Real, const D: usize>(
-        &self,
-        g: [i32; D],
-        placements: &mut Placements<D>,
-    ) -> R
-    where
-        T: TileData<D>,
-    {
-        let n = T::SIZE;
-        let h = self.half_width::<D>();
-        // Along each axis: the first block reaching g, g's local index in it plus n, and the
-        // number of blocks (2 in a blend zone).
-        let mut first = [0i32; D];
-        let mut local = [0usize; D];
-        let mut count = [1usize; 3];
-        for a in 0..D {
-            let zone;
-            (first[a], local[a], zone) = first_block(g[a], n, h);
-            count[a] = 1 + zone as usize;
-        }
-        let mut value = R::ZERO;
-        for mz in 0..count[2] {
-            for my in 0..count[1] {
-                for mx in 0..count[0] {
-                    let m = [mx, my, mz];
-                    let block: [i32; D] =
-                        core::array::from_fn(|a| first[a].wrapping_add(m[a] as i32));
-                    let slot: [usize; 3] = core::array::from_fn(|a| {
-                        if a < D {
-                            block[a].wrapping_sub(placements.base[a]).clamp(0, 2) as usize
-                        } else {
-                            0
-                        }
-                    });
-                    let place = *placements.cache[slot[2]][slot[1]][slot[0]]
-                        .get_or_insert_with(|| self.placement(block));
-                    let l: [usize; D] = core::array::from_fn(|a| local[a] - m[a] * n);
-                    let mut c: R = self.tile().flat(tile_index(l, &place, n));
-                    for a in 0..D {
-                        if count[a] == 2 {
-                            c = blended(c, l[a], n, h);
-                        }
-                    }
-                    value = value.saturating_add(c);
-                }
-            }
-        }
-        value
-    }
-}
-
-/// `c` times its blend weight at local index `l_plus_n − n` ([`blend_weight`]). Out of line:
-/// only blend zones call it.
-#[inline(never)]
-fn blended<R: Real>(c: R, l_plus_n: usize, n: usize, h: usize) -> R {
-    c.mul_fraction(blend_weight(l_plus_n, n, h))
-}
-
-/// Whether projected and filtered bands take the compact path ([`Wavelet::projected_compact`])
-/// rather than the fast one ([`Wavelet::projected_fast`], through a [`Window`]): in wasm,
-/// where the demo's module has a size budget (the fast path is about 10 KB more). Both give
-/// the same values, bit for bit (`tests` below).
-pub(crate) const COMPACT: bool = cfg!(target_arch = "wasm32");
-
 impl<T: TileData<3>> Wavelet<'_, T> {
     /// [`projected`](Self::projected) through a [`Window`], visiting only the coefficients
     /// where the basis can be non-zero. Along an axis (two components of the normal 0) each
@@ -471,8 +333,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// `3/2 − d_a + n_a (n_a d_a)/2`: the other terms of `n·d` are zeros), so the B-splines
     /// are computed per axis and the loops run over the product of their supports; along
     /// another normal, each row is clipped by [`Oblique`]. The same operations in the same
-    /// order as [`projected_compact`](Self::projected_compact) for every coefficient that
-    /// is summed, so the same values, bit for bit.
+    /// order as the reference (`compact.rs`) for every coefficient that is summed, so the
+    /// same values, bit for bit.
     pub(crate) fn projected_fast<R: Real, const GRADIENT: bool>(
         &self,
         p: [R; 3],
@@ -509,7 +371,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             let mut support = [0..0, 0..0, 0..0];
             for a in 0..3 {
                 // t rises with the offset, so the offsets with t in (0, 3) are consecutive
-                // (each is still tested, as the compact path tests it).
+                // (each is still tested, as the reference tests it).
                 let (mut lo, mut hi) = (count[a], 0);
                 for j in 0..count[a] {
                     let j = j % WIDTH;
@@ -568,7 +430,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
 /// integers inside, so the row keeps every coefficient whose `t_x` rounds into `(0, 3)`
 /// (rounding moves `t` by less than 10⁻³ from the line). The row is skipped when `t_y` or `t_z`
 /// is past 0 or 3 by 1/16 at both ends (they are linear too); each coefficient kept is still
-/// tested on its own, as the compact path tests it.
+/// tested on its own, as the reference tests it.
 struct Oblique<R> {
     /// `σ_a` per axis.
     slopes: [R; 3],
@@ -623,6 +485,7 @@ impl<R: Real> Oblique<R> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::wavelet::compact::fetcher;
     use crate::wavelet::{Tile3, Tiling};
     use crate::{FilteredNoise, I16F16};
 
@@ -713,12 +576,13 @@ mod tests {
                     let p = [0; 3].map(|_| rng.uniform(-70.0, 70.0));
                     let w = [0.3, 1.0, 2.9, 3.5][i % 4];
                     let widths = [w, rng.uniform(0.3, 3.9), rng.uniform(0.3, 3.9)];
-                    let fast = band.widened_by::<f32, 3, false>(p, widths);
-                    let compact = band.widened_by::<f32, 3, true>(p, widths);
+                    let fast: f32 = band.widened(p, widths);
+                    let compact = band.widened_by(p, widths, |first, _| fetcher(&band, first));
                     assert_eq!(fast.to_bits(), compact.to_bits(), "{p:?} {widths:?}");
                     let pq = p.map(I16F16::from_num);
-                    let fast = band.widened_by::<I16F16, 3, false>(pq, widths);
-                    assert_eq!(fast, band.widened_by::<I16F16, 3, true>(pq, widths));
+                    let fast: I16F16 = band.widened(pq, widths);
+                    let compact = band.widened_by(pq, widths, |first, _| fetcher(&band, first));
+                    assert_eq!(fast, compact);
                     // And through the public entry point.
                     let d = [w * 0.6, 0.0, 0.0];
                     let _: f32 = band.sample_filtered(p, d, [0.0, w * 0.8, 0.0]);

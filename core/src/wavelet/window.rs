@@ -4,9 +4,9 @@
 //! With blended or varied tiling (§4.3), the coefficient at a global index is the tile read in
 //! the placement of the block that holds it or, in a blend zone, the blend-weighted sum of
 //! the blocks' coefficients along each axis that crosses one (`band.rs`). Found for each
-//! coefficient on its own (`Wavelet::fetch` in `projected.rs`), that costs per axis a
-//! division by the tile size and the blend weights' branches, and per block a placement
-//! lookup. A window resolves the per-axis part once per axis and offset (at most [`WIDTH`]
+//! coefficient on its own (`Wavelet::fetch`, the tests' reference in `compact.rs`), that
+//! costs per axis a division by the tile size and the blend weights' branches, and per block
+//! a placement lookup. A window resolves the per-axis part once per axis and offset (at most [`WIDTH`]
 //! offsets per axis) and each block's placement once, into per-axis parts of the tile's flat
 //! index, so reading a coefficient costs D − 1 additions and a load per block and, in a
 //! zone, the blend products.
