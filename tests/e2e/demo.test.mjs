@@ -1,7 +1,8 @@
 // End-to-end test of the demo page in Debian's Chromium, driven by playwright-core.
 // Serves web/ on 127.0.0.1, then checks what a person would: it renders, every noise differs,
 // each wavelet tiling differs, dragging a band bar changes the spectrum, f32 and fixed point
-// agree, bad input shows a message and leaves the page working, and the browser benchmark runs. Screenshots go to target/e2e/.
+// agree, filtering and infinite zoom do what they say, bad input shows a message and leaves the
+// page working, and the browser benchmark runs. Screenshots go to target/e2e/.
 // Prints "N passed, N failed" and exits non-zero on any failure.
 import { chromium } from 'playwright-core';
 import { spawn } from 'node:child_process';
@@ -53,6 +54,14 @@ async function set(id, value) {
   if (tag === 'SELECT') await page.selectOption(`#${id}`, value); else await page.fill(`#${id}`, value);
   await page.waitForFunction((n) => window.bandnoise.renders > n || window.bandnoise.lastError, before);
 }
+/** Ticks or clears a checkbox and waits for the frame it causes. */
+async function tick(id, on) {
+  const before = await renders();
+  if (on) await page.check(`#${id}`); else await page.uncheck(`#${id}`);
+  await page.waitForFunction((n) => window.bandnoise.renders > n || window.bandnoise.lastError, before);
+}
+/** The frame's standard deviation, as the page prints it. */
+const sigma = async () => Number((await page.textContent('#readout')).match(/σ (-?[0-9.]+)/)[1]);
 async function dragBand(i, weight) {
   await page.locator('#bands').scrollIntoViewIfNeeded();
   const box = await page.locator('#bands').boundingBox();
@@ -150,6 +159,34 @@ await test('f32 and fixed point give nearly the same image', async () => {
   for (let i = 0; i < a.red.length; i++) { const d = Math.abs(a.red[i] - b.red[i]); diff += d; worst = Math.max(worst, d); }
   assert.ok(diff / a.red.length < 0.5 && worst <= 3, `mean ${diff / a.red.length}, worst ${worst}`);
   await set('number', 'f32');
+});
+
+await test('filtering fades what a pixel cannot show; infinite zoom keeps the detail', async () => {
+  await set('kind', 'multiband');
+  // 2 pixels per unit: the finest bands have several coefficients per pixel and alias.
+  await set('zoom', '2');
+  const plain = await sigma();
+  await tick('filtered', true);
+  assert.equal(await message(), '');
+  const filtered = await sigma();
+  assert.ok(filtered < 0.8 * plain && filtered > 0.05, `σ ${plain} plain, ${filtered} filtered`);
+  await page.screenshot({ path: `${artifacts}/demo-filtered.png` });
+  await tick('filtered', false);
+  // 2^10 times closer than the default zoom: plain noise is a fraction of a coefficient,
+  // infinite noise looks as it did.
+  await set('zoom', '32768');
+  const close = await sigma();
+  await tick('infinite', true);
+  assert.equal(await message(), '');
+  const infinite = await sigma();
+  assert.ok(close < 0.25 && infinite > 0.5, `σ ${close} plain, ${infinite} infinite`);
+  await page.screenshot({ path: `${artifacts}/demo-infinite.png` });
+  // Refused where it does not apply, with a message; the page recovers.
+  await set('kind', 'perlin');
+  assert.match(await message(), /infinite zoom applies to multiband/);
+  await tick('infinite', false);
+  await set('zoom', '32');
+  assert.equal(await message(), '');
 });
 
 await test('bad input shows a message and leaves the page working', async () => {

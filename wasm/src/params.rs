@@ -27,6 +27,17 @@ fn kind(name: &str) -> Result<Base, String> {
         .ok_or_else(|| format!("unknown noise kind \"{name}\" (see kinds())"))
 }
 
+/// How a frame's samples are filtered by the pixel's footprint (`bandnoise::FilteredNoise`).
+#[derive(Clone, Debug)]
+pub(crate) enum Filter {
+    /// Point samples.
+    None,
+    /// Wavelet or multiband noise's own filtering: each band averaged over the footprint.
+    Band,
+    /// A fractal sum's octaves clamped to the footprint (pbrt), summed over this noise.
+    Octaves(Box<SpecNoise<3, WebTiles>>),
+}
+
 /// The settings of one frame, built and validated from JavaScript.
 #[wasm_bindgen]
 #[derive(Clone, Debug)]
@@ -39,6 +50,10 @@ pub struct Params {
     pub(crate) time: f32,
     /// Wavelet noise projected along the time axis rather than sliced.
     pub(crate) projected: bool,
+    /// Whether and how samples are filtered by the pixel's footprint.
+    pub(crate) filter: Filter,
+    /// Multiband noise with its band weights following the zoom (infinite noise).
+    pub(crate) infinite: bool,
     pub(crate) marble: bool,
 }
 
@@ -110,7 +125,9 @@ impl Params {
     /// is not a whole number in 0..=65536, or given for wavelet noise; band weights that are
     /// not finite, too many, or all zero for multiband noise; a tiling other than varied,
     /// blended or periodic (used by wavelet and multiband noise, ignored by the others);
-    /// projection asked for a lattice noise; and the core's own errors. (JavaScript receives the message as a thrown string.)
+    /// projection asked for a lattice noise; filtering asked for a lattice noise without a
+    /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
+    /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
     #[wasm_bindgen(constructor)]
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -130,6 +147,8 @@ impl Params {
         distribution: &str,
         tiling: &str,
         projected: bool,
+        filtered: bool,
+        infinite: bool,
         palette: &str,
     ) -> Result<Params, String> {
         let base = kind(kind_name)?;
@@ -188,9 +207,6 @@ impl Params {
         let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
         // The core checks the ranges and says why.
         let octaves = Octaves::new(octaves as u32, lacunarity, gain).map_err(describe)?;
-        if let Some(kind) = kind {
-            spec = spec.with_fractal(kind, octaves);
-        }
         let distribution = match distribution {
             "gaussian" => Distribution::Gaussian,
             "uniform" => Distribution::Uniform,
@@ -223,10 +239,36 @@ impl Params {
                 .and_then(|s| s.with_distribution(distribution))
                 .map_err(describe)?;
         }
+        // Filtering a fractal sum filters its octaves: the sum is then taken in `render.rs`.
+        let unsummed = spec;
+        if let Some(kind) = kind {
+            spec = spec.with_fractal(kind, octaves);
+        }
         if projected && !base.is_wavelet() {
             return Err(format!(
                 "projection applies to wavelet and multiband noise, not {base}"
             ));
+        }
+        if filtered && projected {
+            return Err("filtering applies to sliced noise, not projected".into());
+        }
+        if filtered && kind.is_none() && !base.is_wavelet() {
+            return Err(format!(
+                "filtering applies to wavelet and multiband noise and to fractal sums, not to \
+                 {base} alone"
+            ));
+        }
+        if infinite && base != Base::Multiband {
+            return Err(format!(
+                "infinite zoom applies to multiband noise, not {base}"
+            ));
+        }
+        if infinite && (projected || kind.is_some() || filtered) {
+            return Err(
+                "infinite zoom is multiband noise on its own: no projection, fractal sum or \
+                 filtering"
+                    .into(),
+            );
         }
         let marble = match palette {
             "grey" => false,
@@ -240,6 +282,14 @@ impl Params {
             pan,
             time,
             projected,
+            filter: match (filtered, kind) {
+                (false, _) => Filter::None,
+                (true, None) => Filter::Band,
+                (true, Some(_)) => {
+                    Filter::Octaves(Box::new(unsummed.build_with().map_err(describe)?))
+                }
+            },
+            infinite,
             marble,
         })
     }

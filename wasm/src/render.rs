@@ -5,14 +5,14 @@ use bandnoise::spec::{Base, Tiles};
 use bandnoise::wavelet::{
     DEFAULT_TILE_SEED, Multiband, QuantizedTile2, QuantizedTile3, TILE2_I16, Tile3, Wavelet,
 };
-use bandnoise::{I16F16, Noise, ProjectedNoise, Real};
+use bandnoise::{FilteredNoise, I16F16, Noise, ProjectedNoise, Real};
 use wasm_bindgen::Clamped;
 use wasm_bindgen::prelude::*;
 use web_sys::{CanvasRenderingContext2d, ImageData};
 
 use crate::fft::log_spectrum;
 use crate::palette::color;
-use crate::params::Params;
+use crate::params::{Filter, Params};
 
 /// The demo's 3D wavelet tile: 16³ `i16` coefficients (8 KiB) rather than the crate's 128 KiB
 /// default, to keep the module small; hashed orientations hide its repetition.
@@ -98,17 +98,44 @@ impl<R: Real> Noise<R, 3> for Projected {
     }
 }
 
+/// The page's zoom (pixels per unit) at which infinite noise shows the band weights as set:
+/// its footprint is this over the zoom, so zooming keeps the bands where they are on screen.
+const INFINITE_AT_ZOOM: f32 = 32.0;
+
 fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
     let s = p.noise.spec();
+    // The pixel's footprint in noise space: one pixel along x and along y, none along time.
+    let step = R::from_f32(1.0 / p.zoom);
+    let (dx, dy) = ([step, R::ZERO, R::ZERO], [R::ZERO, step, R::ZERO]);
+    let wavelet = || Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling());
+    let multiband = || {
+        Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution()).with_tiling(s.tiling())
+    };
+    if p.infinite {
+        let (noise, footprint) = (multiband(), R::from_f32(INFINITE_AT_ZOOM / p.zoom));
+        return fill_with(&|q| noise.sample_infinite(q, footprint), p, size, values);
+    }
+    match &p.filter {
+        Filter::None => {}
+        Filter::Octaves(unsummed) => {
+            if let Some((kind, octaves)) = s.fractal() {
+                let sum = Fractal::new(&**unsummed, octaves, kind);
+                return fill_with(&|q| sum.sample_filtered(q, dx, dy), p, size, values);
+            }
+        }
+        Filter::Band if s.base() == Base::Wavelet => {
+            let noise = wavelet();
+            return fill_with(&|q| noise.sample_filtered(q, dx, dy), p, size, values);
+        }
+        Filter::Band => {
+            let noise = multiband();
+            return fill_with(&|q| noise.sample_filtered(q, dx, dy), p, size, values);
+        }
+    }
     // Projection is a way of sampling, not a noise of its own: the spec names the noise.
     let projected = match s.base() {
-        Base::Wavelet if p.projected => {
-            Projected::Wavelet(Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling()))
-        }
-        Base::Multiband if p.projected => Projected::Multiband(
-            Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution())
-                .with_tiling(s.tiling()),
-        ),
+        Base::Wavelet if p.projected => Projected::Wavelet(wavelet()),
+        Base::Multiband if p.projected => Projected::Multiband(multiband()),
         _ => return fill::<R, _>(&p.noise, p, size, values),
     };
     match s.fractal() {

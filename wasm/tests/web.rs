@@ -26,6 +26,8 @@ struct Args<'a> {
     bands: &'a [f32],
     tiling: &'a str,
     projected: bool,
+    filtered: bool,
+    infinite: bool,
 }
 
 const ARGS: Args = Args {
@@ -41,6 +43,8 @@ const ARGS: Args = Args {
     bands: &BANDS,
     tiling: "blended",
     projected: false,
+    filtered: false,
+    infinite: false,
 };
 
 impl Args<'_> {
@@ -62,6 +66,8 @@ impl Args<'_> {
             "gaussian",
             self.tiling,
             self.projected,
+            self.filtered,
+            self.infinite,
             "grey",
         )
     }
@@ -177,6 +183,102 @@ fn periodic_fractal_and_projected_noise_render() {
     assert_eq!(a.std_dev().to_bits(), b.std_dev().to_bits());
 }
 
+/// Filtering by the pixel's footprint fades the bands finer than a pixel: at 2 pixels per unit
+/// the default bands 2–4 (2–8 coefficients per pixel) alias in a point-sampled frame and fade
+/// in a filtered one, so its deviation drops; fractal sums and one band filter too.
+#[wasm_bindgen_test]
+fn filtering_fades_what_a_pixel_cannot_show() {
+    let mut demo = Demo::new(64).unwrap();
+    for number in ["f32", "fixed"] {
+        let aliased = Args {
+            kind: "multiband",
+            number,
+            zoom: 2.0,
+            ..ARGS
+        };
+        demo.render(&aliased.build().unwrap());
+        let plain = demo.std_dev();
+        demo.render(
+            &Args {
+                filtered: true,
+                ..aliased
+            }
+            .build()
+            .unwrap(),
+        );
+        let filtered = demo.std_dev();
+        assert!(
+            filtered < 0.8 * plain && filtered > 0.05,
+            "{number}: σ {plain} plain, {filtered} filtered"
+        );
+    }
+    for args in [
+        Args {
+            kind: "wavelet",
+            zoom: 0.5,
+            ..ARGS
+        },
+        Args {
+            fractal: "fbm",
+            octaves: 8.0,
+            zoom: 4.0,
+            ..ARGS
+        },
+    ] {
+        demo.render(&args.build().unwrap());
+        let plain = demo.std_dev();
+        demo.render(
+            &Args {
+                filtered: true,
+                ..args
+            }
+            .build()
+            .unwrap(),
+        );
+        assert!(
+            demo.std_dev() < plain && demo.std_dev() > 0.01,
+            "{} {}: σ {plain} plain, {} filtered",
+            args.kind,
+            args.fractal,
+            demo.std_dev()
+        );
+    }
+}
+
+/// Infinite zoom: 2¹⁰ times closer, multiband noise looks as it did (its deviation over the
+/// frame stays near 1), where the plain noise is a smooth fraction of one coefficient.
+#[wasm_bindgen_test]
+fn infinite_zoom_keeps_the_detail() {
+    let mut demo = Demo::new(64).unwrap();
+    for number in ["f32", "fixed"] {
+        let infinite = Args {
+            kind: "multiband",
+            number,
+            infinite: true,
+            ..ARGS
+        };
+        let mut sigma = [0.0; 2];
+        for (i, zoom) in [32.0, 32.0 * 1024.0].into_iter().enumerate() {
+            demo.render(&Args { zoom, ..infinite }.build().unwrap());
+            sigma[i] = demo.std_dev();
+        }
+        assert!(
+            sigma.iter().all(|s| (0.5..1.5).contains(s)),
+            "{number}: σ {sigma:?}"
+        );
+        demo.render(
+            &Args {
+                zoom: 32.0 * 1024.0,
+                infinite: false,
+                ..infinite
+            }
+            .build()
+            .unwrap(),
+        );
+        assert!(demo.std_dev() < 0.1, "{number}: plain σ {}", demo.std_dev());
+    }
+}
+
 #[wasm_bindgen_test]
 fn bad_parameters_are_refused_with_a_message() {
     let refused = |args: Args, needle: &str| {
@@ -257,6 +359,39 @@ fn bad_parameters_are_refused_with_a_message() {
             ..ARGS
         },
         "tiling must be",
+    );
+    refused(
+        Args {
+            filtered: true,
+            ..ARGS
+        },
+        "filtering applies",
+    );
+    refused(
+        Args {
+            kind: "wavelet",
+            projected: true,
+            filtered: true,
+            ..ARGS
+        },
+        "not projected",
+    );
+    refused(
+        Args {
+            kind: "wavelet",
+            infinite: true,
+            ..ARGS
+        },
+        "infinite zoom applies to multiband",
+    );
+    refused(
+        Args {
+            kind: "multiband",
+            fractal: "fbm",
+            infinite: true,
+            ..ARGS
+        },
+        "infinite zoom is multiband noise on its own",
     );
     assert!(Demo::new(100).is_err());
 }
