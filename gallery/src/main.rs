@@ -9,8 +9,8 @@
 //! `[-bound, bound]` (the noise's documented amplitude bound) to black..white. The noises come
 //! from the runtime description (`bandnoise::spec`): every base in 2D, in `f32` (`NAME-2d.png`)
 //! and in fixed point (`NAME-2d-fixed.png`), then fractal sums and periodic tiles written in
-//! its text form; then wavelet noise plain and filtered by the pixel's footprint, and infinite
-//! wavelet noise at four zooms. `--spec TEXT` renders one description of your own instead
+//! its text form; then one wavelet band with each tiling, wavelet noise plain and filtered by
+//! the pixel's footprint, and infinite wavelet noise at four zooms. `--spec TEXT` renders one description of your own instead
 //! (`spec.png`).
 
 use std::fs::{self, File};
@@ -172,7 +172,29 @@ fn run(o: &Options) -> Result<(), String> {
         let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
         render::<f32, _>(o, name, &build(&spec.with_seed(o.seed))?)?;
     }
+    render_wavelet_tilings(o)?;
     render_wavelet_filtering(o)
+}
+
+/// One 2D wavelet band over four of its 64² tiles (128 coefficients across the image, whatever
+/// `--scale`) with each tiling: `periodic` repeats, `varied` shows block borders
+/// (some mirrored), `blended` (the default) neither.
+fn render_wavelet_tilings(o: &Options) -> Result<(), String> {
+    use bandnoise::wavelet::{TILE2, Tiling, Wavelet};
+    for (name, tiling) in [
+        ("periodic", Tiling::Periodic),
+        ("varied", Tiling::Varied),
+        ("blended", Tiling::Blended),
+    ] {
+        let band = Wavelet::new(o.seed, &TILE2).with_tiling(tiling);
+        // Three standard deviations of a 2D band (its variance is about 0.27).
+        let bound = 1.6;
+        let zoom = o.scale / 128.0;
+        render_with(o, &format!("wavelet-tiling-{name}"), bound, zoom, |p, _| {
+            band.sample(p)
+        })?;
+    }
+    Ok(())
 }
 
 fn main() -> ExitCode {
