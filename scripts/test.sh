@@ -13,7 +13,7 @@ rustup toolchain install # installs the pinned channel, components and targets; 
 step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
-cargo clippy -p bandnoise-wasm --target wasm32-unknown-unknown --all-targets -- -D warnings
+cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench --target wasm32-unknown-unknown --all-targets -- -D warnings
 
 step "unit, integration and doc tests"
 cargo test --workspace
