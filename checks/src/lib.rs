@@ -191,14 +191,16 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 }
 
 /// Checksums of what is not a noise description: projected sampling, wavelet gradients,
-/// filtering and infinite noise, the cell hash and generator, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 8] = [
+/// filtering and infinite noise, the cell hash and generator, the kernels' `exp` and `cos`, and
+/// [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 9] = [
     "multiband projected",
     "varied multiband projected",
     "wavelet gradients",
     "wavelet filtered",
     "wavelet infinite",
     "cell hash and generator",
+    "exp and cos",
     "tabled perlin 2D",
     "tabled perlin 3D",
 ];
@@ -277,6 +279,18 @@ fn all<R: Bits>(out: &mut [u32]) {
         f.add(rng.uniform::<R>().bits());
         f.add(rng.signed_uniform::<R>().bits());
         f.add(poisson.as_ref().map_or(u32::MAX, |p| rng.poisson(p)));
+    }
+    push(f.0);
+    // The kernels' e^-x and cos 2πx (Real::exp_neg, Real::cos_turns), from -1 to 17 and over
+    // ±64 turns.
+    let mut f = Fnv::new();
+    for i in 0..16 * POINTS as i32 {
+        f.add(R::from_ratio(i * 19 % 18_432 - 1024, 10).exp_neg().bits());
+        f.add(
+            R::from_ratio(i * 7919 % 131_072 - 65_536, 10)
+                .cos_turns()
+                .bits(),
+        );
     }
     push(f.0);
     // Perlin with its table: on x86-64 the table's kernel, elsewhere Perlin's, so the host's

@@ -82,6 +82,7 @@ pub mod levels;
 mod noise;
 mod real;
 pub mod spec;
+mod special;
 pub mod wavelet;
 
 pub use error::Error;

@@ -6,28 +6,10 @@
 //! 1e-6); beyond 4, `erf = ±1` to within 1.6e-8.
 
 use crate::Real;
+use crate::special::{exp_neg_f64 as exp_neg, hermite_basis};
 
 const KNOTS: usize = 65;
 const STEP_SHIFT: u32 = 4; // knots every 2^-4
-
-/// `e^{-y}` for `0 ≤ y ≤ 16`: Taylor series of `e^{-y/32}`, squared five times.
-const fn exp_neg(y: f64) -> f64 {
-    let x = -y / 32.0;
-    let mut term = 1.0;
-    let mut sum = 1.0;
-    let mut k = 1;
-    while k < 24 {
-        term *= x / k as f64;
-        sum += term;
-        k += 1;
-    }
-    let mut i = 0;
-    while i < 5 {
-        sum *= sum;
-        i += 1;
-    }
-    sum
-}
 
 /// `erf(x) = (2/√π) e^{−x²} Σ_n 2^n x^{2n+1} / (2n+1)!!` (all terms positive: no cancellation).
 const fn erf_series(x: f64) -> f64 {
@@ -87,21 +69,14 @@ pub(crate) fn erf_with_derivative<R: Real>(x: R) -> (R, R) {
     let (k0, k1) = (TABLE[i as usize], TABLE[i as usize + 1]);
     let q = |v: i32| R::from_ratio(v, 30);
     let h = R::from_ratio(1, STEP_SHIFT);
-    // Cubic Hermite basis on [0, 1].
-    let t2 = t.mul_rn(t);
-    let t3 = t2.mul_rn(t);
-    let two_t3 = t3 + t3;
-    let three_t2 = t2 + t2 + t2;
-    let h00 = two_t3 - three_t2 + R::ONE;
-    let h10 = t3 - t2 - t2 + t;
-    let h01 = three_t2 - two_t3;
-    let h11 = t3 - t2;
+    let [h00, h10, h01, h11] = hermite_basis(t);
     let v = h00.mul_rn(q(k0[0]))
         + h10.mul_rn(h).mul_rn(q(k0[1]))
         + h01.mul_rn(q(k1[0]))
         + h11.mul_rn(h).mul_rn(q(k1[1]));
     let v = v.clamp_to(R::ZERO, R::ONE);
     // d/dt of the basis: 6t² − 6t, 3t² − 4t + 1, −(6t² − 6t), 3t² − 2t; dt/dx = 1/h = 16.
+    let three_t2 = t.mul_rn(t) + t.mul_rn(t) + t.mul_rn(t);
     let six = three_t2 + three_t2 - (t + t + t) - (t + t + t);
     let d10 = three_t2 - (t + t + t + t) + R::ONE;
     let d11 = three_t2 - t - t;

@@ -1,6 +1,6 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
 //! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, batches, integer outputs (`levels`), and the public
-//! helpers `from_ratio`, `unit_normal` and `erf`) in I16F16 and f32 on
+//! helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and `cos_turns`) in I16F16 and f32 on
 //! inputs the optimiser cannot see (`nopanic-spec` proves the runtime descriptions and
 //! `nopanic-text` their text form), and its panic handler calls a function that does not exist.
 //! If any panic path survives optimisation, the link fails. Built, not run (release, thumbv7em).
@@ -106,10 +106,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         ));
         add(R::from_i32(i32::from(levels.u8(p[2]))));
     }
-    // The public helpers: every shift, any normal, any erf argument.
+    // The public helpers: every shift, any normal, any erf, exp and cos argument.
     add(R::from_ratio(black_box(-7), black_box(u32::MAX)));
     add(unit_normal([p[3], p[0], p[1]])[0]);
     add(erf(p[2]));
+    add(p[1].exp_neg());
+    add(p[0].cos_turns());
     // Batches: a grid and points, through every lane kernel of a lattice noise and a fractal.
     let grid = Grid::new([p[0], p[1]], [p[2], p[3]], black_box([20, 3]));
     let mut out = [R::ZERO; 60];
