@@ -45,13 +45,19 @@ fn check<const M: u32>(x: i32, y: i32, z: i32, w: i32, f: f32) {
 /// `e^{−x}` and `cos 2πx` in f32 (any bit pattern) and I16F16 (any bits) against `std`'s f64.
 fn kernels(f: f32, bits: i32) {
     let (e, c) = (f.exp_neg(), f.cos_turns());
-    assert!((0.0..=1.0).contains(&e) && (-1.0..=1.0).contains(&c), "{f:e}: {e} {c}");
+    assert!(
+        (0.0..=1.0).contains(&e) && (-1.0..=1.0).contains(&c),
+        "{f:e}: {e} {c}"
+    );
     if f.is_nan() || f >= 16.0 {
         assert_eq!(e, 0.0);
     } else if f <= 0.0 {
         assert_eq!(e, 1.0);
     } else {
-        assert!((f64::from(e) - (-f64::from(f)).exp()).abs() < 2e-7, "exp {f:e}");
+        assert!(
+            (f64::from(e) - (-f64::from(f)).exp()).abs() < 2e-7,
+            "exp {f:e}"
+        );
     }
     // Against the cosine of the fraction `split` keeps (exact for every f32).
     let (_, t) = f.split();
