@@ -29,6 +29,9 @@ const COS_SHIFT: u32 = 7;
 const COS_KNOTS: usize = (1 << COS_SHIFT) / 4 + 1;
 /// One in Q2.30.
 const Q30: f64 = (1u64 << 30) as f64;
+/// The knot spacing times the largest slope of `cos 2πx`, `2π/128`, in Q2.30: the derivative
+/// times the spacing at a knot is `−COS_SLOPE · cos 2π(¼ − x)`.
+const COS_SLOPE: i32 = (2.0 * core::f64::consts::PI / (1 << COS_SHIFT) as f64 * Q30 + 0.5) as i32;
 
 /// `e^{−y}` for `0 ≤ y ≤ 16` in `f64`: the Taylor series of `e^{−y/32}`, squared five times.
 pub(crate) const fn exp_neg_f64(y: f64) -> f64 {
@@ -155,7 +158,7 @@ pub(crate) fn cos_turns<R: Real>(x: R) -> R {
     } else {
         let i = i as usize;
         // The derivative times the spacing: −2π/128 · cos 2π(¼ − x), read from the table.
-        let scale = q30::<R>((2.0 * core::f64::consts::PI / (1 << COS_SHIFT) as f64 * Q30) as i32);
+        let scale = q30::<R>(COS_SLOPE);
         let (v0, v1) = (q30::<R>(COS_TABLE[i]), q30::<R>(COS_TABLE[i + 1]));
         let d0 = -q30::<R>(COS_TABLE[COS_KNOTS - 1 - i]).mul_rn(scale);
         let d1 = -q30::<R>(COS_TABLE[COS_KNOTS - 2 - i]).mul_rn(scale);

@@ -2,7 +2,7 @@
 //! description's bases ([`kinds`]), so a noise added to `bandnoise::spec` appears in the demo.
 
 use bandnoise::Error;
-use bandnoise::fractal::{Kind, Octaves};
+use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Tiling};
 use wasm_bindgen::prelude::*;
@@ -34,8 +34,9 @@ pub(crate) enum Filter {
     None,
     /// Wavelet or multiband noise's own filtering: each band averaged over the footprint.
     Band,
-    /// A fractal sum's octaves clamped to the footprint (pbrt), summed over this noise.
-    Octaves(Box<SpecNoise<3, WebTiles>>),
+    /// A fractal sum's octaves clamped to the footprint (pbrt): the spec's sum, taken here
+    /// over its noise so that it can filter.
+    Octaves(Box<Fractal<SpecNoise<3, WebTiles>>>),
 }
 
 /// The settings of one frame, built and validated from JavaScript.
@@ -285,8 +286,9 @@ impl Params {
             filter: match (filtered, kind) {
                 (false, _) => Filter::None,
                 (true, None) => Filter::Band,
-                (true, Some(_)) => {
-                    Filter::Octaves(Box::new(unsummed.build_with().map_err(describe)?))
+                (true, Some(kind)) => {
+                    let noise = unsummed.build_with().map_err(describe)?;
+                    Filter::Octaves(Box::new(Fractal::new(noise, octaves, kind)))
                 }
             },
             infinite,

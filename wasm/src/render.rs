@@ -117,11 +117,8 @@ fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
     }
     match &p.filter {
         Filter::None => {}
-        Filter::Octaves(unsummed) => {
-            if let Some((kind, octaves)) = s.fractal() {
-                let sum = Fractal::new(&**unsummed, octaves, kind);
-                return fill_with(&|q| sum.sample_filtered(q, dx, dy), p, size, values);
-            }
+        Filter::Octaves(sum) => {
+            return fill_with(&|q| sum.sample_filtered(q, dx, dy), p, size, values);
         }
         Filter::Band if s.base() == Base::Wavelet => {
             let noise = wavelet();

@@ -76,7 +76,8 @@ pub(crate) fn erf_with_derivative<R: Real>(x: R) -> (R, R) {
         + h11.mul_rn(h).mul_rn(q(k1[1]));
     let v = v.clamp_to(R::ZERO, R::ONE);
     // d/dt of the basis: 6t² − 6t, 3t² − 4t + 1, −(6t² − 6t), 3t² − 2t; dt/dx = 1/h = 16.
-    let three_t2 = t.mul_rn(t) + t.mul_rn(t) + t.mul_rn(t);
+    let t2 = t.mul_rn(t);
+    let three_t2 = t2 + t2 + t2;
     let six = three_t2 + three_t2 - (t + t + t) - (t + t + t);
     let d10 = three_t2 - (t + t + t + t) + R::ONE;
     let d11 = three_t2 - t - t;
