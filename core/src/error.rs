@@ -55,6 +55,24 @@ pub enum Error {
     /// A Poisson mean that is not finite or not in `(0, 32]` (see
     /// [`Poisson`](crate::hash::Poisson)).
     PoissonMean(f32),
+    /// An impulse density (impulses per kernel volume) that is not finite or not in
+    /// `[min, max]` (see [`SparseConvolution`](crate::impulse::SparseConvolution)).
+    Density {
+        /// The density given.
+        density: f32,
+        /// The smallest density allowed.
+        min: f32,
+        /// The largest density allowed in this dimension.
+        max: f32,
+    },
+    /// A fixed impulse count per cell outside `1..=max` (see
+    /// [`Impulses::fixed`](crate::impulse::Impulses::fixed)).
+    ImpulseCount {
+        /// The count given.
+        count: u32,
+        /// The largest count allowed.
+        max: u32,
+    },
     /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
     ///
     /// [`Spec::build`]: crate::spec::Spec::build
@@ -136,6 +154,16 @@ impl fmt::Display for Error {
                 "Poisson mean {} must be finite and in (0, 32]",
                 Shortest(*m)
             ),
+            Error::Density { density, min, max } => write!(
+                f,
+                "impulse density {} must be finite and in [{}, {}] impulses per kernel volume",
+                Shortest(*density),
+                Shortest(*min),
+                Shortest(*max)
+            ),
+            Error::ImpulseCount { count, max } => {
+                write!(f, "{count} impulses per cell given, 1..={max} are allowed")
+            }
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")
             }

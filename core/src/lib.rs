@@ -77,6 +77,7 @@ mod decimal;
 mod error;
 pub mod fractal;
 pub mod hash;
+pub mod impulse;
 pub mod lattice;
 pub mod levels;
 mod noise;

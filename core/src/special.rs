@@ -107,14 +107,14 @@ pub(crate) fn hermite_basis<R: Real>(t: R) -> [R; 4] {
 /// The cubic Hermite interpolant at `t ∈ [0, 1]` between knots with values `v0`, `v1` and
 /// derivatives times the knot spacing `d0`, `d1`: `h₀₀ v₀ + h₁₀ d₀ + h₀₁ v₁ + h₁₁ d₁`.
 #[inline]
-fn hermite<R: Real>(t: R, v0: R, d0: R, v1: R, d1: R) -> R {
+pub(crate) fn hermite<R: Real>(t: R, v0: R, d0: R, v1: R, d1: R) -> R {
     let [h00, h10, h01, h11] = hermite_basis(t);
     h00.mul_rn(v0) + h10.mul_rn(d0) + h01.mul_rn(v1) + h11.mul_rn(d1)
 }
 
 /// A Q2.30 table entry as `R`.
 #[inline]
-fn q30<R: Real>(v: i32) -> R {
+pub(crate) fn q30<R: Real>(v: i32) -> R {
     R::from_ratio(v, 30)
 }
 

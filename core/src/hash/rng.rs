@@ -58,6 +58,13 @@ impl CellRng {
         mix(self.key.wrapping_add(self.counter.wrapping_mul(WEYL)))
     }
 
+    /// Skips `n` draws: what drawing them would have done to the generator, so a caller that
+    /// needs a draw only sometimes keeps the later draws where they were.
+    #[inline]
+    pub(crate) fn skip(&mut self, n: u32) {
+        self.counter = self.counter.wrapping_add(n);
+    }
+
     /// Uniform in `[0, 1)`: a multiple of 2⁻²⁴, exact in `f32` and `f64`; I16F16 gets it
     /// rounded down to 2⁻¹⁶.
     #[inline]
@@ -128,6 +135,11 @@ impl Poisson {
         if !(mean > 0.0 && mean <= Self::MAX_MEAN) {
             return Err(Error::PoissonMean(mean));
         }
+        Ok(Self::tabulate(mean))
+    }
+
+    /// The distribution with mean `mean`, which the caller has checked is in `(0, 32]`.
+    pub(crate) fn tabulate(mean: f32) -> Self {
         let lambda = mean as f64;
         let scale = 4_294_967_296.0;
         let mut thresholds = [u32::MAX; MAX_THRESHOLDS];
@@ -145,11 +157,11 @@ impl Poisson {
             pmf *= lambda / (k + 1) as f64;
             cdf += pmf;
         }
-        Ok(Self {
+        Self {
             mean: mean.to_bits(),
             cap,
             thresholds,
-        })
+        }
     }
 
     /// The mean.

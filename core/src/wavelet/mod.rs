@@ -60,7 +60,7 @@
 mod band;
 #[cfg(test)]
 mod compact;
-mod constmath;
+pub(crate) mod constmath;
 mod defaults;
 mod erf;
 mod filtered;

@@ -1,0 +1,274 @@
+//! Noises made of random impulses convolved with a kernel: Lewis's sparse convolution noise
+//! (Lewis 1989, §4), and the walk over cells and impulses that Gabor noise will share.
+//!
+//! # The impulse walk
+//!
+//! Lewis approximates a Poisson process of impulses by "choosing N Poisson-distributed
+//! impulses in each voxel", the voxel's number seeding the generator of its impulses, with the
+//! lattice spacing equal to the kernel's radius, "so only the voxel containing x and its
+//! neighbours (3³ = 27 voxels) can contribute" (§4). bandnoise does exactly this, in any
+//! dimension from 1 to 4, with the crate's per-cell generator ([`CellRng`], keyed by the
+//! [`CellHash`] of the noise's seed and the cell):
+//!
+//! 1. Split the point (in units of the kernel's radius) into its cell and its fraction `f`.
+//! 2. Of the `3^D` cells around it, skip those whose nearest point is at distance 1 or more
+//!    (on average 20.6 of the 27 cells in 3D are visited, 8.1 of 9 in 2D).
+//! 3. Draw the cell's count: Poisson with a per-cell mean ([`Impulses::poisson`], capped as
+//!    [`Poisson`] documents, so amplitudes have a proved bound), or a fixed count per cell
+//!    ([`Impulses::fixed`]: the "stratified Poisson" process that Tavernier et al. 2019 found
+//!    as good and faster).
+//! 4. Each impulse takes one 32-bit draw for its position (15 bits per axis in 1D and 2D, 10 in
+//!    3D, 7 in 4D: the centres of `2^bits` equal bins, `(2k + 1)/2^(bits+1)`, so every number
+//!    type holds them exactly) and, for [`Weights::Sign`], its sign from the draw's top bit;
+//!    [`Weights::Uniform`] takes a second draw (`(2k + 1)/2¹⁶`, symmetric in `(−1, 1)`).
+//! 5. Impulses at distance 1 or more add nothing; the others add their weight times the kernel
+//!    at the squared distance. A kernel that needs more random numbers per impulse (Gabor
+//!    noise's orientation and phase) declares how many, and gets them from the same cell
+//!    generator at a place that does not depend on which impulses were skipped.
+//!
+//! Every step is integer arithmetic or the number type's `+ − ×` on fractions in `(−2, 2)`,
+//! so a value is the same on every target, and fixed point cannot overflow whatever the
+//! coordinate.
+
+mod kernel;
+mod sparse;
+
+pub use kernel::Kernel;
+pub use sparse::SparseConvolution;
+
+use crate::hash::{CellHash, CellRng, Poisson};
+use crate::{Error, Real};
+
+/// The largest fixed count per cell ([`Impulses::fixed`]).
+pub const MAX_FIXED: u32 = 32;
+
+/// How an impulse's weight is drawn.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Weights {
+    /// Uniform in `(−1, 1)` (Lewis's "uncorrelated intensities"; `E[w²] = 1/3`). One draw
+    /// more per impulse than [`Sign`](Self::Sign).
+    #[default]
+    Uniform,
+    /// `±1` with equal odds (Tavernier et al. 2019's Bernoulli weights; `E[w²] = 1`): the
+    /// sum is closer to Gaussian at a given density, and the sign comes with the position.
+    Sign,
+}
+
+impl Weights {
+    /// `E[w²]` of the weights as drawn (the uniform weights' `2¹⁶` levels make it
+    /// `(1 − 2⁻³²)/3`).
+    #[must_use]
+    pub fn power(self) -> f64 {
+        match self {
+            Weights::Uniform => (1.0 - 1.0 / 4_294_967_296.0) / 3.0,
+            Weights::Sign => 1.0,
+        }
+    }
+}
+
+/// How many impulses a cell holds.
+#[derive(Clone, Debug, PartialEq)]
+enum Count {
+    /// Poisson with this distribution.
+    Poisson(Poisson),
+    /// Exactly this many.
+    Fixed(u32),
+}
+
+/// A cell's impulses: how many, and how they are weighted.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Error, impulse::{Impulses, Weights}};
+///
+/// let lewis = Impulses::poisson(2.5)?; // a mean of 2.5 per cell, uniform weights
+/// assert_eq!(lewis.per_cell(), 2.5);
+/// let fast = Impulses::fixed(3)?.with_weights(Weights::Sign);
+/// assert_eq!(fast.cap(), 3);
+/// assert!(Impulses::fixed(0).is_err());
+/// # Ok::<(), Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Impulses {
+    count: Count,
+    weights: Weights,
+}
+
+impl Impulses {
+    /// Poisson counts with mean `per_cell`, uniform weights.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::PoissonMean`] unless `0 < per_cell ≤ 32`.
+    pub fn poisson(per_cell: f32) -> Result<Self, Error> {
+        Ok(Self {
+            count: Count::Poisson(Poisson::new(per_cell)?),
+            weights: Weights::default(),
+        })
+    }
+
+    /// Poisson counts for a mean the caller has checked.
+    pub(crate) fn poisson_checked(per_cell: f32, weights: Weights) -> Self {
+        Self {
+            count: Count::Poisson(Poisson::tabulate(per_cell)),
+            weights,
+        }
+    }
+
+    /// Exactly `per_cell` impulses in every cell, uniform weights.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ImpulseCount`] unless `1 ≤ per_cell ≤` [`MAX_FIXED`].
+    pub fn fixed(per_cell: u32) -> Result<Self, Error> {
+        if !(1..=MAX_FIXED).contains(&per_cell) {
+            return Err(Error::ImpulseCount {
+                count: per_cell,
+                max: MAX_FIXED,
+            });
+        }
+        Ok(Self {
+            count: Count::Fixed(per_cell),
+            weights: Weights::default(),
+        })
+    }
+
+    /// The same counts with weights drawn as `weights` says.
+    #[must_use]
+    pub fn with_weights(self, weights: Weights) -> Self {
+        Self { weights, ..self }
+    }
+
+    /// The weights.
+    #[must_use]
+    pub fn weights(&self) -> Weights {
+        self.weights
+    }
+
+    /// The mean number of impulses per cell.
+    #[must_use]
+    pub fn per_cell(&self) -> f32 {
+        match &self.count {
+            Count::Poisson(p) => p.mean(),
+            Count::Fixed(n) => *n as f32,
+        }
+    }
+
+    /// Whether the counts are fixed rather than Poisson.
+    #[must_use]
+    pub fn is_fixed(&self) -> bool {
+        matches!(self.count, Count::Fixed(_))
+    }
+
+    /// The most impulses a cell ever holds.
+    #[must_use]
+    pub fn cap(&self) -> u32 {
+        match &self.count {
+            Count::Poisson(p) => p.cap(),
+            Count::Fixed(n) => *n,
+        }
+    }
+
+    /// The variance of `Σ w_k h(x − ξ_k)` by Campbell's theorem, `λ E[w²] ∫h²`, for a
+    /// kernel whose `∫h²` over a unit-radius support is `power` (cells of volume 1, so `λ` is
+    /// the mean count per cell). It holds for fixed counts too: with independent zero-mean
+    /// weights only each impulse's own square survives, and uniform positions spread it over
+    /// the cell.
+    #[must_use]
+    pub fn variance(&self, power: f64) -> f64 {
+        self.per_cell() as f64 * self.weights.power() * power
+    }
+
+    /// The cell's count (one draw for Poisson counts, none for fixed ones).
+    #[inline]
+    fn count(&self, rng: &mut CellRng) -> u32 {
+        match &self.count {
+            Count::Poisson(p) => rng.poisson(p),
+            Count::Fixed(n) => *n,
+        }
+    }
+}
+
+/// Bits of an impulse's position draw per axis in `D` dimensions (at most 31 in all: the top
+/// bit is the sign of [`Weights::Sign`]).
+const fn position_bits(d: usize) -> u32 {
+    if d <= 2 { 15 } else { 31 / d as u32 }
+}
+
+/// `Σ w_k · kernel(…)` over the impulses within distance 1 of `p` (in cell units): the walk of
+/// the module docs. `kernel(delta, d², w, rng)` gets the offset from the impulse to `p`, its
+/// squared length (below 1), the weight, and a generator from which it may take `extra` draws.
+#[inline]
+pub(crate) fn sum<R: Real, const D: usize>(
+    hash: &CellHash,
+    impulses: &Impulses,
+    p: [R; D],
+    extra: u32,
+    mut kernel: impl FnMut([R; D], R, R, &mut CellRng) -> R,
+) -> R {
+    let bits = position_bits(D);
+    let mask = (1u32 << bits) - 1;
+    let split = p.map(Real::split);
+    // Squared distances from the point to the cells below and above, per axis.
+    let below = split.map(|(_, f)| f.mul_rn(f));
+    let above = split.map(|(_, f)| {
+        let g = R::ONE - f;
+        g.mul_rn(g)
+    });
+    let weight_draws = u32::from(impulses.weights == Weights::Uniform);
+    let mut total = R::ZERO;
+    for n in 0..3usize.pow(D as u32) {
+        let mut rest = n;
+        let mut offset = [0i32; D];
+        let mut gap = R::ZERO;
+        for (a, o) in offset.iter_mut().enumerate() {
+            *o = (rest % 3) as i32 - 1;
+            rest /= 3;
+            gap = gap
+                + match *o {
+                    -1 => below[a],
+                    1 => above[a],
+                    _ => R::ZERO,
+                };
+        }
+        if gap >= R::ONE {
+            continue;
+        }
+        let cell: [i32; D] = core::array::from_fn(|a| split[a].0.wrapping_add(offset[a]));
+        let mut rng = CellRng::new(hash, cell);
+        for _ in 0..impulses.count(&mut rng) {
+            let draw = rng.next_u32();
+            let mut delta = [R::ZERO; D];
+            let mut d2 = R::ZERO;
+            for a in 0..D {
+                let k = (draw >> (a as u32 * bits)) & mask;
+                let u = R::from_ratio((2 * k + 1) as i32, bits + 1);
+                let d = split[a].1 - u - R::from_i32(offset[a]);
+                delta[a] = d;
+                d2 = d2 + d.mul_rn(d);
+            }
+            if d2 >= R::ONE {
+                rng.skip(weight_draws + extra);
+                continue;
+            }
+            let w = match impulses.weights {
+                Weights::Sign => {
+                    if draw >> 31 == 1 {
+                        R::NEG_ONE
+                    } else {
+                        R::ONE
+                    }
+                }
+                Weights::Uniform => {
+                    let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
+                    R::from_ratio(2 * k + 1, 16)
+                }
+            };
+            let mut own = rng.clone();
+            rng.skip(extra);
+            total = total + kernel(delta, d2, w, &mut own);
+        }
+    }
+    total
+}
