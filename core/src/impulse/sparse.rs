@@ -22,7 +22,7 @@ use crate::{Error, I16F16, Noise, Real};
 ///
 /// The kernel's radius is one unit: sample at `x · f` for features `1/f` units wide. The
 /// default is Lewis's cosine kernel at 10 impulses per kernel volume with Poisson counts and
-/// uniform weights; the builders change each (a smaller density is faster, see
+/// ±1 weights (closer to Gaussian than uniform weights: see [`Weights`]); the builders change each (a smaller density is faster, see
 /// `bench/README.md`).
 ///
 /// # Amplitude
@@ -67,14 +67,19 @@ impl<const D: usize> SparseConvolution<D> {
     pub const MIN_DENSITY: f32 = 0.01;
 
     /// The noise for `seed`: Lewis's cosine kernel, [`DEFAULT_DENSITY`](Self::DEFAULT_DENSITY),
-    /// Poisson counts, uniform weights.
+    /// Poisson counts, ±1 weights.
     #[must_use]
     pub fn new(seed: u32) -> Self {
-        const { assert!(D >= 1 && D <= 4, "sparse convolution noise has 1 to 4 dimensions") };
+        const {
+            assert!(
+                D >= 1 && D <= 4,
+                "sparse convolution noise has 1 to 4 dimensions"
+            )
+        };
         Self::build(
             CellHash::new(seed),
             Kernel::Cosine,
-            Impulses::poisson_checked(Self::per_cell(Self::DEFAULT_DENSITY), Weights::Uniform),
+            Impulses::poisson_checked(Self::per_cell(Self::DEFAULT_DENSITY), Weights::default()),
         )
     }
 
