@@ -12,6 +12,7 @@
 
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
@@ -58,7 +59,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 13] = [
+pub const FUNCTIONS: [&str; 15] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -72,6 +73,8 @@ pub const FUNCTIONS: [&str; 13] = [
     "wavelet-projected-axis",
     "wavelet-projected-oblique",
     "fbm6-perlin-3d",
+    "sparse-2d",
+    "sparse-3d",
 ];
 
 /// Who computes it (a column of the table). The first two are bandnoise.
@@ -188,6 +191,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         n
     };
     let fbm = || Fractal::fbm(Perlin::new(0), Octaves::new(6, 2.0, 0.5).unwrap());
+    // The speed goal's configuration: 3 impulses in every cell (Peachey's count).
+    let sparse3 = || SparseConvolution::<3>::new(0).with_fixed_count(3).unwrap();
     let l = layout;
     let run: Run = match (function, implementation) {
         ("perlin-2d", "bandnoise") => l.point::<_, 2>(Perlin::new(0)),
@@ -218,6 +223,10 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         }
         ("fbm6-perlin-3d", "bandnoise") => l.point::<_, 3>(fbm()),
         ("fbm6-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(fbm()),
+        ("sparse-2d", "bandnoise") => l.point::<_, 2>(SparseConvolution::<2>::new(0)),
+        ("sparse-2d", "bandnoise-batch") => l.batch::<_, 2>(SparseConvolution::<2>::new(0)),
+        ("sparse-3d", "bandnoise") => l.point::<_, 3>(sparse3()),
+        ("sparse-3d", "bandnoise-batch") => l.batch::<_, 3>(sparse3()),
 
         ("perlin-2d", "noise") => {
             let n = noise::Perlin::new(0);
@@ -304,12 +313,13 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
 #[must_use]
 pub fn peer_function(function: &str) -> &str {
     match function {
-        "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" => "perlin-2d",
+        "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "sparse-2d" => "perlin-2d",
         "tabled-perlin-3d"
         | "mnoise-3d"
         | "wavelet-3d"
         | "wavelet-projected-axis"
-        | "wavelet-projected-oblique" => "perlin-3d",
+        | "wavelet-projected-oblique"
+        | "sparse-3d" => "perlin-3d",
         f => f,
     }
 }

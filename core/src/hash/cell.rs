@@ -55,6 +55,13 @@ impl CellHash {
         }
     }
 
+    /// The chain's first value, into which the first axis is folded by
+    /// [`ChainHash::step`] (walks that share prefixes start from it).
+    #[inline]
+    pub(crate) fn start(&self) -> u32 {
+        self.start
+    }
+
     /// The hash of `cell` (1 to 4 or more dimensions).
     #[inline]
     #[must_use]

@@ -36,6 +36,7 @@ mod sparse;
 pub use kernel::Kernel;
 pub use sparse::SparseConvolution;
 
+use crate::hash::chain::ChainHash;
 use crate::hash::{CellHash, CellRng, Poisson};
 use crate::{Error, Real};
 
@@ -201,6 +202,10 @@ const fn position_bits(d: usize) -> u32 {
 /// `Σ w_k · kernel(…)` over the impulses within distance 1 of `p` (in cell units): the walk of
 /// the module docs. `kernel(delta, d², w, rng)` gets the offset from the impulse to `p`, its
 /// squared length (below 1), the weight, and a generator from which it may take `extra` draws.
+///
+/// The `3^D` cells are visited as an odometer over the axes, the first axis slowest, so the
+/// cell hash's chain (first axis folded first) shares its prefixes, and a prefix of axes whose
+/// distances alone reach 1 skips all the cells beyond it at once.
 #[inline]
 pub(crate) fn sum<R: Real, const D: usize>(
     hash: &CellHash,
@@ -209,68 +214,143 @@ pub(crate) fn sum<R: Real, const D: usize>(
     extra: u32,
     mut kernel: impl FnMut([R; D], R, R, &mut CellRng) -> R,
 ) -> R {
-    let bits = position_bits(D);
+    let bits = const { position_bits(D) };
     let mask = (1u32 << bits) - 1;
-    let split = p.map(Real::split);
-    // Squared distances from the point to the cells below and above, per axis.
-    let below = split.map(|(_, f)| f.mul_rn(f));
-    let above = split.map(|(_, f)| {
+    // Per axis and offset −1, 0, 1: the cell, the point's coordinate relative to the cell's
+    // corner, and the squared distance from the point to the cell.
+    let mut cells = [[0u32; 3]; D];
+    let mut base = [[R::ZERO; 3]; D];
+    let mut gaps = [[R::ZERO; 3]; D];
+    for a in 0..D {
+        let (c, f) = p[a].split();
         let g = R::ONE - f;
-        g.mul_rn(g)
-    });
+        cells[a] = [c.wrapping_sub(1) as u32, c as u32, c.wrapping_add(1) as u32];
+        base[a] = [f + R::ONE, f, f - R::ONE];
+        gaps[a] = [f.mul_rn(f), R::ZERO, g.mul_rn(g)];
+    }
     let weight_draws = u32::from(impulses.weights == Weights::Uniform);
     let mut total = R::ZERO;
-    for n in 0..3usize.pow(D as u32) {
-        let mut rest = n;
-        let mut offset = [0i32; D];
-        let mut gap = R::ZERO;
-        for (a, o) in offset.iter_mut().enumerate() {
-            *o = (rest % 3) as i32 - 1;
-            rest /= 3;
-            gap = gap
-                + match *o {
-                    -1 => below[a],
-                    1 => above[a],
-                    _ => R::ZERO,
-                };
-        }
-        if gap >= R::ONE {
-            continue;
-        }
-        let cell: [i32; D] = core::array::from_fn(|a| split[a].0.wrapping_add(offset[a]));
-        let mut rng = CellRng::new(hash, cell);
-        for _ in 0..impulses.count(&mut rng) {
-            let draw = rng.next_u32();
-            let mut delta = [R::ZERO; D];
-            let mut d2 = R::ZERO;
-            for a in 0..D {
-                let k = (draw >> (a as u32 * bits)) & mask;
-                let u = R::from_ratio((2 * k + 1) as i32, bits + 1);
-                let d = split[a].1 - u - R::from_i32(offset[a]);
-                delta[a] = d;
-                d2 = d2 + d.mul_rn(d);
-            }
-            if d2 >= R::ONE {
-                rng.skip(weight_draws + extra);
-                continue;
-            }
-            let w = match impulses.weights {
-                Weights::Sign => {
-                    if draw >> 31 == 1 {
-                        R::NEG_ONE
-                    } else {
-                        R::ONE
-                    }
-                }
-                Weights::Uniform => {
-                    let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
-                    R::from_ratio(2 * k + 1, 16)
-                }
+    // The odometer: `digit[a]` is axis a's offset + 1; `chain[a]` and `gap[a]` are the hash and
+    // the squared distance over axes 0..=a; axes from `from` on need recomputing.
+    let mut digit = [0usize; D];
+    let mut chain = [0u32; D];
+    let mut gap = [R::ZERO; D];
+    let mut from = 0;
+    loop {
+        let mut reached = true;
+        for a in from..D {
+            let (h, g) = if a == 0 {
+                (hash.start(), R::ZERO)
+            } else {
+                (chain[a - 1], gap[a - 1])
             };
-            let mut own = rng.clone();
-            rng.skip(extra);
-            total = total + kernel(delta, d2, w, &mut own);
+            gap[a] = g + gaps[a][digit[a]];
+            if gap[a] >= R::ONE {
+                // Every cell with this prefix is out of reach: skip them all.
+                for d in digit.iter_mut().skip(a + 1) {
+                    *d = 2;
+                }
+                reached = false;
+                break;
+            }
+            chain[a] = hash.step(h, cells[a][digit[a]]);
+        }
+        if reached {
+            let mut rng = CellRng::from_key(chain[D - 1]);
+            let here: [R; D] = core::array::from_fn(|a| base[a][digit[a]]);
+            for _ in 0..impulses.count(&mut rng) {
+                let draw = rng.next_u32();
+                let mut delta = [R::ZERO; D];
+                let mut d2 = R::ZERO;
+                for a in 0..D {
+                    let k = (draw >> (a as u32 * bits)) & mask;
+                    let d = here[a] - R::from_ratio((2 * k + 1) as i32, bits + 1);
+                    delta[a] = d;
+                    d2 = d2 + d.mul_rn(d);
+                }
+                if d2 >= R::ONE {
+                    rng.skip(weight_draws + extra);
+                    continue;
+                }
+                let w = match impulses.weights {
+                    Weights::Sign => {
+                        if draw >> 31 == 1 {
+                            R::NEG_ONE
+                        } else {
+                            R::ONE
+                        }
+                    }
+                    Weights::Uniform => {
+                        let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
+                        R::from_ratio(2 * k + 1, 16)
+                    }
+                };
+                let mut own = rng.clone();
+                rng.skip(extra);
+                total = total + kernel(delta, d2, w, &mut own);
+            }
+        }
+        // The next cell: the last axis fastest.
+        let mut a = D;
+        loop {
+            if a == 0 {
+                return total;
+            }
+            a -= 1;
+            digit[a] += 1;
+            if digit[a] < 3 {
+                break;
+            }
+            digit[a] = 0;
+        }
+        from = a;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use super::*;
+
+    /// The walk's shared prefixes give each cell its [`CellHash`], and it visits exactly the
+    /// cells within reach (against a direct loop over the 3^D cells).
+    #[test]
+    fn walk_visits_the_cells_in_reach_with_their_hashes() {
+        let hash = CellHash::new(11);
+        let impulses = Impulses::fixed(1).unwrap();
+        for p in [[0.5f64, 0.5, 0.5], [0.05, 0.93, 0.5], [-3.2, 7.9, 0.01], [0.0, 0.0, 0.0]] {
+            // One impulse per cell: collect each visited cell's first draw through the kernel's
+            // delta (the impulse's position identifies the draw).
+            let mut seen = std::vec::Vec::new();
+            sum(&hash, &impulses, p, 0, |delta, _, _, _| {
+                seen.push(delta);
+                0.0
+            });
+            let mut want = std::vec::Vec::new();
+            for n in 0..27 {
+                let o = [n / 9, n / 3 % 3, n % 3].map(|d| d as i32 - 1);
+                let cell: [i32; 3] = core::array::from_fn(|a| p[a].floor() as i32 + o[a]);
+                let f: [f64; 3] = core::array::from_fn(|a| p[a] - p[a].floor());
+                let reach: f64 = (0..3)
+                    .map(|a| match o[a] {
+                        -1 => f[a] * f[a],
+                        1 => (1.0 - f[a]) * (1.0 - f[a]),
+                        _ => 0.0,
+                    })
+                    .sum();
+                if reach >= 1.0 {
+                    continue;
+                }
+                let draw = CellRng::new(&hash, cell).next_u32();
+                let delta: [f64; 3] = core::array::from_fn(|a| {
+                    let k = (draw >> (a as u32 * 10)) & 1023;
+                    (f[a] - o[a] as f64) - (2 * k + 1) as f64 / 2048.0
+                });
+                if delta.iter().map(|d| d * d).sum::<f64>() < 1.0 {
+                    want.push(delta);
+                }
+            }
+            assert_eq!(seen, want, "{p:?}");
         }
     }
-    total
 }
