@@ -348,3 +348,38 @@ fn fixed_point_follows_f32() {
         assert!(w2 < 2e-3 && w3 < 2e-3, "{kernel:?} {w2} {w3}");
     }
 }
+
+/// The analytic gradient is the derivative (central differences in `f64`, 2D and 3D, both
+/// kernels), and its value is `sample`'s bit for bit in every number type.
+#[test]
+fn gradient_is_the_derivative() {
+    use bandnoise::NoiseGradient;
+    let mut rng = Rng::from_env(21);
+    for kernel in KERNELS {
+        let noise = SparseConvolution::<3>::new(4).with_kernel(kernel);
+        let two = SparseConvolution::<2>::new(4).with_kernel(kernel);
+        let mut worst = 0.0f64;
+        for _ in 0..2000 {
+            let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-50.0, 50.0));
+            let (v, g) = noise.sample_with_gradient(p);
+            assert_eq!(v.to_bits(), noise.sample(p).to_bits());
+            let h = 1e-6;
+            for a in 0..3 {
+                let (mut hi, mut lo) = (p, p);
+                hi[a] += h;
+                lo[a] -= h;
+                let numeric = (noise.sample(hi) - noise.sample(lo)) / (2.0 * h);
+                worst = worst.max((numeric - g[a]).abs());
+            }
+            let q: [I16F16; 2] = [I16F16::from_num(p[0]), I16F16::from_num(p[1])];
+            assert_eq!(two.sample_with_gradient(q).0, two.sample(q));
+            let f = [p[0] as f32, p[1] as f32];
+            assert_eq!(
+                two.sample_with_gradient(f).0.to_bits(),
+                two.sample(f).to_bits()
+            );
+        }
+        println!("{kernel:?}: |analytic − numeric gradient| ≤ {worst:.1e}");
+        assert!(worst < 1e-6, "{kernel:?}: {worst}");
+    }
+}

@@ -199,21 +199,22 @@ const fn position_bits(d: usize) -> u32 {
     if d <= 2 { 15 } else { 31 / d as u32 }
 }
 
-/// `Σ w_k · kernel(…)` over the impulses within distance 1 of `p` (in cell units): the walk of
-/// the module docs. `kernel(delta, d², w, rng)` gets the offset from the impulse to `p`, its
-/// squared length (below 1), the weight, and a generator from which it may take `extra` draws.
+/// Calls `visit(delta, d², w, rng)` for each impulse within distance 1 of `p` (in cell units),
+/// in a fixed order: the walk of the module docs. `visit` gets the offset from the impulse to
+/// `p`, its squared length (below 1), the weight, and a generator from which it may take
+/// `extra` draws.
 ///
 /// The `3^D` cells are visited as an odometer over the axes, the first axis slowest, so the
 /// cell hash's chain (first axis folded first) shares its prefixes, and a prefix of axes whose
 /// distances alone reach 1 skips all the cells beyond it at once.
 #[inline]
-pub(crate) fn sum<R: Real, const D: usize>(
+pub(crate) fn walk<R: Real, const D: usize>(
     hash: &CellHash,
     impulses: &Impulses,
     p: [R; D],
     extra: u32,
-    mut kernel: impl FnMut([R; D], R, R, &mut CellRng) -> R,
-) -> R {
+    mut visit: impl FnMut([R; D], R, R, &mut CellRng),
+) {
     let bits = const { position_bits(D) };
     let mask = (1u32 << bits) - 1;
     // Per axis and offset −1, 0, 1: the cell, the point's coordinate relative to the cell's
@@ -229,7 +230,6 @@ pub(crate) fn sum<R: Real, const D: usize>(
         gaps[a] = [f.mul_rn(f), R::ZERO, g.mul_rn(g)];
     }
     let weight_draws = u32::from(impulses.weights == Weights::Uniform);
-    let mut total = R::ZERO;
     // The odometer: `digit[a]` is axis a's offset + 1; `chain[a]` and `gap[a]` are the hash and
     // the squared distance over axes 0..=a; axes from `from` on need recomputing.
     let mut digit = [0usize; D];
@@ -287,14 +287,14 @@ pub(crate) fn sum<R: Real, const D: usize>(
                 };
                 let mut own = rng.clone();
                 rng.skip(extra);
-                total = total + kernel(delta, d2, w, &mut own);
+                visit(delta, d2, w, &mut own);
             }
         }
         // The next cell: the last axis fastest.
         let mut a = D;
         loop {
             if a == 0 {
-                return total;
+                return;
             }
             a -= 1;
             digit[a] += 1;
@@ -318,14 +318,16 @@ mod tests {
     fn walk_visits_the_cells_in_reach_with_their_hashes() {
         let hash = CellHash::new(11);
         let impulses = Impulses::fixed(1).unwrap();
-        for p in [[0.5f64, 0.5, 0.5], [0.05, 0.93, 0.5], [-3.2, 7.9, 0.01], [0.0, 0.0, 0.0]] {
+        for p in [
+            [0.5f64, 0.5, 0.5],
+            [0.05, 0.93, 0.5],
+            [-3.2, 7.9, 0.01],
+            [0.0, 0.0, 0.0],
+        ] {
             // One impulse per cell: collect each visited cell's first draw through the kernel's
             // delta (the impulse's position identifies the draw).
             let mut seen = std::vec::Vec::new();
-            sum(&hash, &impulses, p, 0, |delta, _, _, _| {
-                seen.push(delta);
-                0.0
-            });
+            walk(&hash, &impulses, p, 0, |delta, _, _, _| seen.push(delta));
             let mut want = std::vec::Vec::new();
             for n in 0..27 {
                 let o = [n / 9, n / 3 % 3, n % 3].map(|d| d as i32 - 1);
