@@ -97,6 +97,9 @@ pub enum Error {
     NotWavelet(&'static str),
     /// A multiband setting (bands, distribution) asked for another noise.
     NotMultiband(&'static str),
+    /// An impulse setting (density, count, kernel, weights) asked for a noise that is not
+    /// made of impulses.
+    NotImpulse(&'static str),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -181,6 +184,10 @@ impl fmt::Display for Error {
                     "{noise} noise has no bands or distribution (multiband only)"
                 )
             }
+            Error::NotImpulse(noise) => write!(
+                f,
+                "{noise} noise has no impulses (density, count, kernel and weights are for sparse noise)"
+            ),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")
             }

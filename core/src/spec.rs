@@ -19,6 +19,7 @@
 //! wavelet seed=3 tiling=periodic
 //! multiband seed=5 first=-1 bands=0.5,1,0.5 distribution=uniform
 //! mnoise seed=1 ridged octaves=4 lacunarity=1.99 gain=0.5
+//! sparse seed=2 kernel=catmull-rom density=3
 //! ```
 //!
 //! | setting | value | default |
@@ -29,6 +30,10 @@
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
 //! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
+//! | `density=` | impulses per kernel volume, `0.01` to the dimension's [`SparseConvolution::max_density`] (sparse noise, Poisson counts) | `10` |
+//! | `count=` | impulses in every cell, `1..=32` (sparse noise, instead of a density) | Poisson counts |
+//! | `kernel=` | `cosine` or `catmull-rom` (sparse noise, [`Kernel`]) | `cosine` |
+//! | `weights=` | `sign` or `uniform` (sparse noise, [`Weights`]) | `sign` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
 //!
@@ -78,6 +83,7 @@ use core::str::FromStr;
 use crate::batch::{Grid, LANES};
 use crate::decimal;
 use crate::fractal::{Fractal, Kind, Octaves};
+use crate::impulse::{self, Impulses, Kernel, SparseConvolution, Weights};
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
@@ -109,11 +115,13 @@ pub enum Base {
     Wavelet,
     /// [`Multiband`] wavelet noise over the same tiles, 2D and 3D. Text: `multiband`.
     Multiband,
+    /// [`SparseConvolution`]: Lewis's sparse convolution noise, 1D–4D. Text: `sparse`.
+    Sparse,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 8] = [
+    pub const ALL: [Base; 9] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -122,6 +130,7 @@ impl Base {
         Base::MNoise4093,
         Base::Wavelet,
         Base::Multiband,
+        Base::Sparse,
     ];
 
     /// The name in the text form.
@@ -136,6 +145,7 @@ impl Base {
             Base::MNoise4093 => "mnoise4093",
             Base::Wavelet => "wavelet",
             Base::Multiband => "multiband",
+            Base::Sparse => "sparse",
         }
     }
 
@@ -151,7 +161,13 @@ impl Base {
     /// Whether the noise can be wrapped by [`Periodic`] (the lattice noises).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !self.is_wavelet()
+        !self.is_wavelet() && !self.is_impulse()
+    }
+
+    /// Whether the noise is made of random impulses (and has impulse settings).
+    #[must_use]
+    pub const fn is_impulse(self) -> bool {
+        matches!(self, Base::Sparse)
     }
 
     /// Whether the noise reads a wavelet tile (and has a [`Tiling`]).
@@ -180,6 +196,12 @@ pub struct Spec {
     /// Multiband noise's bands and distribution; the defaults for every other base.
     bands: Bands,
     distribution: Distribution,
+    /// Sparse convolution noise's kernel, weights, density and fixed count (0: Poisson counts
+    /// at `density`); the defaults for every other base.
+    kernel: Kernel,
+    weights: Weights,
+    density: f32,
+    per_cell: u8,
     fractal: Option<(Kind, Octaves)>,
 }
 
@@ -195,6 +217,10 @@ impl Spec {
             tiling: Tiling::Blended,
             bands: DEFAULT_BANDS,
             distribution: Distribution::Gaussian,
+            kernel: Kernel::Cosine,
+            weights: Weights::Sign,
+            density: impulse::DEFAULT_DENSITY,
+            per_cell: 0,
             fractal: None,
         }
     }
@@ -275,6 +301,84 @@ impl Spec {
         Ok(self)
     }
 
+    /// Sparse convolution noise with `density` impulses per kernel volume (Poisson counts),
+    /// replacing a fixed count.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`]; [`Error::Density`] unless
+    /// `density` is finite and in `[0.01, 32·π²/2]` (the largest 4D density; building checks
+    /// the dimension's own, [`SparseConvolution::max_density`]).
+    pub fn with_density(mut self, density: f32) -> Result<Self, Error> {
+        self.impulse_setting()?;
+        let max = SparseConvolution::<4>::max_density();
+        if !(impulse::MIN_DENSITY..=max).contains(&density) {
+            return Err(Error::Density {
+                density,
+                min: impulse::MIN_DENSITY,
+                max,
+            });
+        }
+        self.density = density;
+        self.per_cell = 0;
+        Ok(self)
+    }
+
+    /// Sparse convolution noise with exactly `per_cell` impulses in every cell.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`]; [`Error::ImpulseCount`]
+    /// unless `1 ≤ per_cell ≤` [`MAX_FIXED`](impulse::MAX_FIXED).
+    pub fn with_fixed_count(mut self, per_cell: u32) -> Result<Self, Error> {
+        self.impulse_setting()?;
+        Impulses::fixed(per_cell)?;
+        self.per_cell = per_cell as u8;
+        Ok(self)
+    }
+
+    /// Sparse convolution noise with `kernel`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`].
+    pub fn with_kernel(mut self, kernel: Kernel) -> Result<Self, Error> {
+        self.impulse_setting()?;
+        self.kernel = kernel;
+        Ok(self)
+    }
+
+    /// Sparse convolution noise with impulse weights drawn as `weights` says.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`].
+    pub fn with_weights(mut self, weights: Weights) -> Result<Self, Error> {
+        self.impulse_setting()?;
+        self.weights = weights;
+        Ok(self)
+    }
+
+    fn impulse_setting(&self) -> Result<(), Error> {
+        if self.base.is_impulse() {
+            Ok(())
+        } else {
+            Err(Error::NotImpulse(self.base.name()))
+        }
+    }
+
+    /// The sparse convolution noise this describes in `D` dimensions.
+    fn sparse<const D: usize>(&self) -> Result<SparseConvolution<D>, Error> {
+        let noise = SparseConvolution::<D>::new(self.seed)
+            .with_kernel(self.kernel)
+            .with_weights(self.weights);
+        if self.per_cell > 0 {
+            noise.with_fixed_count(u32::from(self.per_cell))
+        } else {
+            noise.with_density(self.density)
+        }
+    }
+
     /// The same noise summed by a [`Fractal`] of `kind` with `octaves`.
     #[must_use]
     pub const fn with_fractal(mut self, kind: Kind, octaves: Octaves) -> Self {
@@ -319,6 +423,29 @@ impl Spec {
     #[must_use]
     pub const fn distribution(&self) -> Distribution {
         self.distribution
+    }
+
+    /// Sparse convolution noise's kernel (the default for other bases).
+    #[must_use]
+    pub const fn kernel(&self) -> Kernel {
+        self.kernel
+    }
+
+    /// Sparse convolution noise's weights (the default for other bases).
+    #[must_use]
+    pub const fn weights(&self) -> Weights {
+        self.weights
+    }
+
+    /// Sparse convolution noise's density in impulses per kernel volume, or its fixed count
+    /// per cell (`Err`).
+    #[must_use]
+    pub const fn density(&self) -> Result<f32, u32> {
+        if self.per_cell > 0 {
+            Err(self.per_cell as u32)
+        } else {
+            Ok(self.density)
+        }
     }
 
     /// The fractal sum, if any.
@@ -386,6 +513,12 @@ impl Spec {
                 Multiband::new(s, S::three(), self.bands, self.distribution)
                     .with_tiling(self.tiling),
             ),
+            Base::Sparse => match D {
+                1 => Any::Sparse1(self.sparse::<1>()?),
+                2 => Any::Sparse2(self.sparse::<2>()?),
+                3 => Any::Sparse3(self.sparse::<3>()?),
+                _ => Any::Sparse4(self.sparse::<4>()?),
+            },
         };
         Ok(SpecNoise {
             spec: *self,
@@ -426,6 +559,23 @@ impl fmt::Display for Spec {
                 Distribution::Gaussian => " distribution=gaussian",
                 Distribution::Uniform => " distribution=uniform",
             })?;
+        }
+        if self.base.is_impulse() {
+            f.write_str(match self.kernel {
+                Kernel::Cosine => " kernel=cosine",
+                Kernel::CatmullRom => " kernel=catmull-rom",
+            })?;
+            f.write_str(match self.weights {
+                Weights::Sign => " weights=sign",
+                Weights::Uniform => " weights=uniform",
+            })?;
+            match self.density() {
+                Ok(d) => {
+                    f.write_str(" density=")?;
+                    decimal::write_f32(f, d)?;
+                }
+                Err(n) => write!(f, " count={n}")?,
+            }
         }
         if self.base.is_wavelet() {
             f.write_str(match self.tiling {
@@ -522,10 +672,11 @@ impl fmt::Display for ParseError {
 impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
-const EXPECTED_BASE: &str =
-    "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, wavelet, multiband)";
+const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
+     wavelet, multiband, sparse)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
-     distribution=, fbm, turbulence, ridged, octaves=, lacunarity=, gain=)";
+     distribution=, density=, count=, kernel=, weights=, fbm, turbulence, ridged, octaves=, \
+     lacunarity=, gain=)";
 
 impl FromStr for Spec {
     type Err = ParseError;
@@ -560,6 +711,10 @@ impl FromStr for Spec {
                 "first" => &mut seen.first,
                 "bands" => &mut seen.bands,
                 "distribution" => &mut seen.distribution,
+                "density" => &mut seen.density,
+                "count" => &mut seen.impulses,
+                "kernel" => &mut seen.kernel,
+                "weights" => &mut seen.weights,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -577,7 +732,53 @@ impl FromStr for Spec {
                     refused: Some(Error::NotMultiband(base.name())),
                 });
             }
+            if matches!(key, "density" | "count" | "kernel" | "weights") && !base.is_impulse() {
+                return Err(ParseError {
+                    position: at,
+                    expected: "impulse settings only for sparse noise",
+                    refused: Some(Error::NotImpulse(base.name())),
+                });
+            }
+            if matches!(key, "density" | "count") && seen.density && seen.impulses {
+                return Err(err(at, "a density or a count, not both"));
+            }
+            let refused = |position, expected, e| ParseError {
+                position,
+                expected,
+                refused: Some(e),
+            };
             match key {
+                "density" => {
+                    const E: &str = "a density in [0.01, 157.9] impulses per kernel volume";
+                    let v = decimal::parse_f32(needs_value(E)?).ok_or(err(value_at, E))?;
+                    spec = spec.with_density(v).map_err(|e| refused(value_at, E, e))?;
+                }
+                "count" => {
+                    const E: &str = "a count in 1..=32 impulses per cell";
+                    let v = needs_value(E)?;
+                    let n = v.parse().map_err(|_| err(value_at, E))?;
+                    spec = spec
+                        .with_fixed_count(n)
+                        .map_err(|e| refused(value_at, E, e))?;
+                }
+                "kernel" => {
+                    const E: &str = "a kernel (cosine, catmull-rom)";
+                    let kernel = match needs_value(E)? {
+                        "cosine" => Kernel::Cosine,
+                        "catmull-rom" => Kernel::CatmullRom,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec.with_kernel(kernel).map_err(|e| refused(at, E, e))?;
+                }
+                "weights" => {
+                    const E: &str = "weights (sign, uniform)";
+                    let weights = match needs_value(E)? {
+                        "sign" => Weights::Sign,
+                        "uniform" => Weights::Uniform,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec.with_weights(weights).map_err(|e| refused(at, E, e))?;
+                }
                 "seed" => {
                     const E: &str = "a seed in 0..=4294967295";
                     let v = needs_value(E)?;
@@ -752,6 +953,10 @@ struct Seen {
     first: bool,
     bands: bool,
     distribution: bool,
+    density: bool,
+    impulses: bool,
+    kernel: bool,
+    weights: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -892,6 +1097,10 @@ enum Any<S: Tiles> {
     Wavelet3(Wavelet<'static, S::Three>),
     Multiband2(Multiband<'static, S::Two>),
     Multiband3(Multiband<'static, S::Three>),
+    Sparse1(SparseConvolution<1>),
+    Sparse2(SparseConvolution<2>),
+    Sparse3(SparseConvolution<3>),
+    Sparse4(SparseConvolution<4>),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1014,7 +1223,7 @@ impl<R: Real, const D: usize> Op<R, D> for Gradient<R, D> {
 /// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` and `$multiband` name the
 /// variants sampled in this dimension, if any.
 macro_rules! spec_noise {
-    ($d:literal $(, $wavelet:ident, $multiband:ident)?) => {
+    ($d:literal, $sparse:ident $(, $wavelet:ident, $multiband:ident)?) => {
         impl<S: Tiles> Layers<$d, S> {
             /// Runs `op` on the (possibly periodic) base noise.
             fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
@@ -1026,10 +1235,12 @@ macro_rules! spec_noise {
                     Any::C(n) => with_period(n, period, op),
                     Any::M61(n) => with_period(n, period, op),
                     Any::M4093(n) => with_period(n, period, op),
+                    Any::$sparse(n) => op.run(n),
                     $(Any::$wavelet(n) => op.run(n),
                     Any::$multiband(n) => op.run(n),)?
-                    #[allow(unreachable_patterns, reason = "the other wavelet dimension")]
-                    Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_) => {
+                    #[allow(unreachable_patterns, reason = "the other dimensions")]
+                    Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_)
+                    | Any::Sparse1(_) | Any::Sparse2(_) | Any::Sparse3(_) | Any::Sparse4(_) => {
                         op.run(&Zero)
                     }
                 }
@@ -1081,7 +1292,7 @@ macro_rules! spec_noise_entry_points {
     };
 }
 
-spec_noise!(1);
-spec_noise!(2, Wavelet2, Multiband2);
-spec_noise!(3, Wavelet3, Multiband3);
-spec_noise!(4);
+spec_noise!(1, Sparse1);
+spec_noise!(2, Sparse2, Wavelet2, Multiband2);
+spec_noise!(3, Sparse3, Wavelet3, Multiband3);
+spec_noise!(4, Sparse4);

@@ -2,6 +2,7 @@
 //! describes bit for bit, the text form round-trips, bad text is an error with a position (never
 //! a panic), and every noise type of the crate is described.
 
+use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
 use bandnoise::prelude::*;
 use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
 use bandnoise::spec::{I16Tiles, Tiles};
@@ -271,6 +272,20 @@ fn random_spec(rng: &mut Rng) -> Spec {
                 .expect("multiband");
         }
     }
+    if base.is_impulse() {
+        if rng.next_u64().is_multiple_of(2) {
+            spec = spec.with_kernel(Kernel::CatmullRom).expect("sparse");
+        }
+        if rng.next_u64().is_multiple_of(2) {
+            spec = spec.with_weights(Weights::Uniform).expect("sparse");
+        }
+        spec = if rng.next_u64().is_multiple_of(2) {
+            spec.with_fixed_count(1 + (rng.next_u64() % 32) as u32)
+        } else {
+            spec.with_density(rng.f64_in(0.01, 64.0) as f32)
+        }
+        .expect("in range");
+    }
     if rng.next_u64().is_multiple_of(2) {
         let kind = KINDS[rng.next_u64() as usize % 3];
         let octaves = Octaves::new(
@@ -461,6 +476,7 @@ fn every_noise_type_in_core_is_described() {
         ("Fractal", "fbm, turbulence, ridged"),
         ("Wavelet", "wavelet"),
         ("Multiband", "multiband"),
+        ("SparseConvolution", "sparse"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -541,6 +557,87 @@ fn every_noise_type_in_core_is_described() {
     }
 }
 
+/// A sparse spec samples the typed noise it names bit for bit (value and gradient, f32 and
+/// I16F16, 1D–4D), and its settings are refused for other noises and out of range.
+#[test]
+fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
+    fn check<const D: usize>(spec: &Spec, typed: &SparseConvolution<D>, rng: &mut Rng)
+    where
+        SparseConvolution<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+        SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+    {
+        let built = spec.build::<D>().expect("builds");
+        for _ in 0..200 {
+            let q: [I16F16; D] = rng.exact_point(100);
+            let f = bandnoise_tests::to_f32(q);
+            assert_eq!(
+                built.sample(f).to_bits(),
+                typed.sample(f).to_bits(),
+                "{spec}"
+            );
+            assert_eq!(built.sample(q), typed.sample(q), "{spec}");
+            let (a, b) = (built.sample_with_gradient(f), typed.sample_with_gradient(f));
+            assert_eq!(a.0.to_bits(), b.0.to_bits());
+            assert_eq!(a.1.map(f32::to_bits), b.1.map(f32::to_bits));
+        }
+        assert_eq!(
+            Noise::<f32, D>::amplitude_bound(&built),
+            typed.amplitude_bound()
+        );
+    }
+    let mut rng = Rng::from_env(186);
+    let spec: Spec = "sparse seed=9 kernel=catmull-rom weights=uniform density=3"
+        .parse()
+        .expect("valid");
+    let typed = |s| {
+        SparseConvolution::<3>::new(s)
+            .with_kernel(Kernel::CatmullRom)
+            .with_weights(Weights::Uniform)
+    };
+    check::<3>(&spec, &typed(9).with_density(3.0).unwrap(), &mut rng);
+    let spec: Spec = "sparse seed=4 count=2".parse().expect("valid");
+    let fixed = |s| SparseConvolution::<2>::new(s).with_fixed_count(2).unwrap();
+    check::<2>(&spec, &fixed(4), &mut rng);
+    check::<1>(
+        &Spec::new(Base::Sparse, 1),
+        &SparseConvolution::<1>::new(1),
+        &mut rng,
+    );
+    check::<4>(
+        &Spec::new(Base::Sparse, 1),
+        &SparseConvolution::<4>::new(1),
+        &mut rng,
+    );
+    // The text prints every setting.
+    assert_eq!(
+        Spec::new(Base::Sparse, 5).to_string(),
+        "sparse seed=5 kernel=cosine weights=sign density=10"
+    );
+    // Refusals.
+    let e = "perlin density=3".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::NotImpulse("perlin")));
+    assert_eq!(e.position(), 7);
+    let e = "sparse density=3 count=2".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 17, "{e}");
+    let e = "sparse count=0".parse::<Spec>().unwrap_err();
+    assert!(
+        matches!(e.refused(), Some(Error::ImpulseCount { count: 0, .. })),
+        "{e}"
+    );
+    let e = "sparse density=nan".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 15, "{e}");
+    assert!(Spec::new(Base::Sparse, 0).with_period(&[4]).is_err());
+    // 150 per kernel is within 4D's range, not 2D's (32 per cell).
+    let dense = Spec::new(Base::Sparse, 0)
+        .with_density(150.0)
+        .expect("4D allows it");
+    assert!(dense.build::<4>().is_ok());
+    assert!(matches!(
+        dense.build::<2>().unwrap_err(),
+        Error::Density { density: 150.0, .. }
+    ));
+}
+
 /// With the `serde` feature a spec is its text form: a JSON string that round-trips, and a bad
 /// string fails with the parser's message.
 #[test]
@@ -596,12 +693,12 @@ fn consumers_take_their_noises_from_the_description() {
             "{what} ({path}) does not take its noises from bandnoise::spec"
         );
     }
-    // Every base is a lattice noise the helper knows, or a wavelet noise.
+    // Every base is a lattice noise the helper knows, a wavelet noise or an impulse noise.
     for base in Base::ALL {
         if base.is_lattice() {
             let _ = bandnoise_tests::Lattice::of(base, 0);
         } else {
-            assert!(base.is_wavelet(), "{base}");
+            assert!(base.is_wavelet() || base.is_impulse(), "{base}");
         }
     }
 }

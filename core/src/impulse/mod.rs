@@ -42,6 +42,11 @@ use crate::{Error, Real};
 
 /// The largest fixed count per cell ([`Impulses::fixed`]).
 pub const MAX_FIXED: u32 = 32;
+/// The default density of sparse convolution noise, in impulses per kernel volume (Lewis: at
+/// ten and above, "usually not distinguishable" from convolved white noise).
+pub const DEFAULT_DENSITY: f32 = 10.0;
+/// The smallest density: below it the noise is isolated bumps.
+pub const MIN_DENSITY: f32 = 0.01;
 
 /// How an impulse's weight is drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]

@@ -60,11 +60,10 @@ pub struct SparseConvolution<const D: usize> {
 }
 
 impl<const D: usize> SparseConvolution<D> {
-    /// The default density: impulses per kernel volume (Lewis: at ten and above, not
-    /// distinguishable from convolved white noise).
-    pub const DEFAULT_DENSITY: f32 = 10.0;
-    /// The smallest density: below it the noise is isolated bumps.
-    pub const MIN_DENSITY: f32 = 0.01;
+    /// The default density: impulses per kernel volume ([`super::DEFAULT_DENSITY`]).
+    pub const DEFAULT_DENSITY: f32 = super::DEFAULT_DENSITY;
+    /// The smallest density ([`super::MIN_DENSITY`]).
+    pub const MIN_DENSITY: f32 = super::MIN_DENSITY;
 
     /// The noise for `seed`: Lewis's cosine kernel, [`DEFAULT_DENSITY`](Self::DEFAULT_DENSITY),
     /// Poisson counts, ±1 weights.
