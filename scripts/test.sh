@@ -94,7 +94,7 @@ fi
 (
     cd fuzz
     cargo fmt --all -- --check
-    for target in hash lattice wavelet fractal spec; do
+    for target in hash lattice wavelet fractal spec impulse; do
         # New inputs go to a scratch corpus; the committed seeds stay as they are.
         mkdir -p "../target/fuzz-corpus/$target"
         cargo +nightly-2026-05-20 fuzz run "$target" "../target/fuzz-corpus/$target" "corpus/$target" \

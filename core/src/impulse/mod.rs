@@ -249,7 +249,9 @@ pub(crate) fn walk<R: Real, const D: usize>(
             } else {
                 (chain[a - 1], gap[a - 1])
             };
-            gap[a] = g + gaps[a][digit[a]];
+            // Digits are 0, 1 or 2; `min` says so to the compiler (no bounds check).
+            let o = digit[a].min(2);
+            gap[a] = g + gaps[a][o];
             if gap[a] >= R::ONE {
                 // Every cell with this prefix is out of reach: skip them all.
                 for d in digit.iter_mut().skip(a + 1) {
@@ -258,11 +260,11 @@ pub(crate) fn walk<R: Real, const D: usize>(
                 reached = false;
                 break;
             }
-            chain[a] = hash.step(h, cells[a][digit[a]]);
+            chain[a] = hash.step(h, cells[a][o]);
         }
         if reached {
             let mut rng = CellRng::from_key(chain[D - 1]);
-            let here: [R; D] = core::array::from_fn(|a| base[a][digit[a]]);
+            let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
             for _ in 0..impulses.count(&mut rng) {
                 let draw = rng.next_u32();
                 let mut delta = [R::ZERO; D];

@@ -1,0 +1,128 @@
+//! Every impulse noise of the runtime description (`bandnoise::spec::Base`, so one added there
+//! is fuzzed unasked), with arbitrary settings (density as any f32 bit pattern, counts, kernels,
+//! weights) and arbitrary bit patterns as coordinates and seeds, 1D–4D, in f32 and I16F16:
+//! settings are refused for a documented reason or build; samples never panic, are never NaN
+//! or -0.0, lie within the documented bound; the gradient's value is the sample's; the batch
+//! path equals `sample` bit for bit; fixed point follows f32 where the input is exact in both.
+#![no_main]
+
+use arbitrary::Arbitrary;
+use bandnoise::batch::LANES;
+use bandnoise::impulse::{Kernel, MAX_FIXED, MIN_DENSITY, Weights};
+use bandnoise::spec::{Base, Spec};
+use bandnoise::{Error, I16F16, Noise, NoiseGradient};
+use libfuzzer_sys::fuzz_target;
+
+#[derive(Arbitrary, Debug)]
+struct Input {
+    /// An index into the impulse noises of `Base::ALL`.
+    base: u8,
+    seed: u32,
+    /// The density's bits, or (if `fixed`) the count per cell.
+    density: u32,
+    fixed: bool,
+    catmull_rom: bool,
+    uniform: bool,
+    bits: [u32; 4],
+}
+
+fn dim<const D: usize>(spec: &Spec, floats: [f32; 4], fixed: [I16F16; 4], exact: bool)
+where
+    bandnoise::spec::SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+{
+    let noise = match spec.build::<D>() {
+        Ok(n) => n,
+        Err(Error::Density { density, max, .. }) => {
+            // The spec's range is the widest (4D); each dimension's own is narrower.
+            assert!(density > max, "{spec} refused in {D}D");
+            return;
+        }
+        Err(e) => panic!("{spec} in {D}D: {e}"),
+    };
+    let p: [f32; D] = core::array::from_fn(|a| floats[a]);
+    let q: [I16F16; D] = core::array::from_fn(|a| fixed[a]);
+    let bound = Noise::<f32, D>::amplitude_bound(&noise);
+    let v: f32 = noise.sample(p);
+    assert!(
+        !v.is_nan() && v.abs() <= bound,
+        "{spec} {D}D {p:?}: {v} (bound {bound})"
+    );
+    assert_ne!(v.to_bits(), (-0.0f32).to_bits());
+    let (gv, g) = noise.sample_with_gradient(p);
+    assert_eq!(gv.to_bits(), v.to_bits(), "{spec} {D}D {p:?}");
+    assert!(g.iter().all(|d| d.is_finite()), "{spec} {p:?}: {g:?}");
+    let w: I16F16 = noise.sample(q);
+    assert!(
+        w.to_num::<f32>().abs() <= bound,
+        "{spec} {D}D fixed {q:?}: {w}"
+    );
+    assert_eq!(noise.sample_with_gradient(q).0, w);
+    let lanes: [[f32; LANES]; D] =
+        core::array::from_fn(|a| core::array::from_fn(|l| p[a] + l as f32 * 0.25));
+    let mut out = [0.0f32; LANES];
+    noise.sample_lanes(&lanes, &mut out);
+    for (l, o) in out.iter().enumerate() {
+        let x: [f32; D] = core::array::from_fn(|a| lanes[a][l]);
+        assert_eq!(
+            o.to_bits(),
+            noise.sample(x).to_bits(),
+            "{spec} {D}D batch {x:?}"
+        );
+    }
+    if exact {
+        // Each impulse in reach (at most 3^D·cap of them) is off by at most 1e-4 (the
+        // kernel's I16F16 error) plus its squared distance's rounding times the kernel's
+        // slope (2⁻¹⁵·10), scaled by 1/σ: in all at most that times amplitude_bound.
+        let qf: [f32; D] = core::array::from_fn(|a| fixed[a].to_num::<f32>());
+        let vf: f32 = noise.sample(qf);
+        let tolerance = (1e-4 + 10.0 / 32768.0) * bound + 1.0 / 4096.0;
+        assert!(
+            (w.to_num::<f32>() - vf).abs() <= tolerance,
+            "{spec} {D}D {q:?}: {w} vs {vf} (tolerance {tolerance})"
+        );
+    }
+}
+
+fuzz_target!(|input: Input| {
+    let impulse: Vec<Base> = Base::ALL.into_iter().filter(|b| b.is_impulse()).collect();
+    let Some(&base) = impulse.get(usize::from(input.base) % impulse.len().max(1)) else {
+        return;
+    };
+    let mut spec = Spec::new(base, input.seed);
+    if input.catmull_rom {
+        spec = spec
+            .with_kernel(Kernel::CatmullRom)
+            .expect("an impulse noise");
+    }
+    if input.uniform {
+        spec = spec
+            .with_weights(Weights::Uniform)
+            .expect("an impulse noise");
+    }
+    let set = if input.fixed {
+        spec.with_fixed_count(input.density)
+    } else {
+        spec.with_density(f32::from_bits(input.density))
+    };
+    spec = match set {
+        Ok(s) => s,
+        Err(Error::ImpulseCount { count, max }) => {
+            assert!(count == 0 || count > max, "{count} refused");
+            assert_eq!(max, MAX_FIXED);
+            return;
+        }
+        Err(Error::Density { density, min, max }) => {
+            assert!(!(min..=max).contains(&density), "{density} refused");
+            assert_eq!(min, MIN_DENSITY);
+            return;
+        }
+        Err(e) => panic!("{spec}: {e}"),
+    };
+    let floats = input.bits.map(f32::from_bits);
+    let fixed = input.bits.map(|b| I16F16::from_bits(b as i32));
+    let exact = fixed.iter().all(|x| x.to_bits().unsigned_abs() < 256 << 16);
+    dim::<1>(&spec, floats, fixed, exact);
+    dim::<2>(&spec, floats, fixed, exact);
+    dim::<3>(&spec, floats, fixed, exact);
+    dim::<4>(&spec, floats, fixed, exact);
+});
