@@ -74,7 +74,16 @@ fn parse_args() -> Result<Options, String> {
 
 /// Samples `noise` over the grid and writes it as an 8-bit grey PNG.
 fn render<R: Real, N: Noise<R, 2>>(o: &Options, name: &str, noise: &N) -> Result<(), String> {
-    let bound = noise.amplitude_bound();
+    render_scaled(o, name, noise, noise.amplitude_bound())
+}
+
+/// Samples `noise` over the grid mapping `[-bound, bound]` to black..white.
+fn render_scaled<R: Real, N: Noise<R, 2>>(
+    o: &Options,
+    name: &str,
+    noise: &N,
+    bound: f32,
+) -> Result<(), String> {
     let f = |p: [f32; 2], _| noise.sample(p.map(R::from_f32)).to_f32();
     render_with(o, name, bound, 1.0, f)
 }
@@ -165,15 +174,38 @@ fn run(o: &Options) -> Result<(), String> {
     }
     for base in Base::ALL.into_iter().filter(|b| b.has_dimension(2)) {
         let noise = build(&Spec::new(base, o.seed))?;
-        render::<f32, _>(o, &format!("{base}-2d"), &noise)?;
-        render::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise)?;
+        if base.is_impulse() {
+            // Variance 1 and a bound far above what occurs: show ±3σ.
+            render_scaled::<f32, _>(o, &format!("{base}-2d"), &noise, 3.0)?;
+            render_scaled::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise, 3.0)?;
+        } else {
+            render::<f32, _>(o, &format!("{base}-2d"), &noise)?;
+            render::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise)?;
+        }
     }
     for (name, text) in COMPOSED {
         let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
         render::<f32, _>(o, name, &build(&spec.with_seed(o.seed))?)?;
     }
     render_wavelet_tilings(o)?;
+    render_sparse_densities(o)?;
     render_wavelet_filtering(o)
+}
+
+/// Sparse convolution noise at 1, 3, 10 and 30 impulses per kernel volume, with Lewis's and
+/// Peachey's kernels (Lewis 1989 §4: below a few impulses per kernel the noise is lumpy; at ten
+/// and more it is convolved white noise), ±3σ, features a few pixels wide at the default size.
+fn render_sparse_densities(o: &Options) -> Result<(), String> {
+    for kernel in ["cosine", "catmull-rom"] {
+        for density in ["1", "3", "10", "30"] {
+            let text = format!("sparse seed={} kernel={kernel} density={density}", o.seed);
+            let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+            let noise = build(&spec)?;
+            let name = format!("sparse-{kernel}-{density}");
+            render_scaled::<f32, _>(o, &name, &noise, 3.0)?;
+        }
+    }
+    Ok(())
 }
 
 /// One 2D wavelet band over four of its 64² tiles (128 coefficients across the image, whatever
