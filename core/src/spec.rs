@@ -439,7 +439,6 @@ impl Spec {
 
     /// Sparse convolution noise's density in impulses per kernel volume, or its fixed count
     /// per cell (`Err`).
-    #[must_use]
     pub const fn density(&self) -> Result<f32, u32> {
         if self.per_cell > 0 {
             Err(self.per_cell as u32)

@@ -178,7 +178,7 @@ fn spectral_density(grid: &[f64], side: usize, d: usize, spacing: f64) -> Vec<f6
         let stride = side.pow(a as u32);
         for start in 0..grid.len() {
             // Each line along axis a once: its first element has coordinate 0 along a.
-            if (start / stride) % side != 0 {
+            if !(start / stride).is_multiple_of(side) {
                 continue;
             }
             for (k, l) in line.iter_mut().enumerate() {

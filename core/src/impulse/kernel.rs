@@ -109,7 +109,7 @@ impl Kernel {
             Kernel::Cosine => (&COSINE, COSINE_SHIFT),
             Kernel::CatmullRom => (&CATMULL_ROM, CATMULL_ROM_SHIFT),
         };
-        if !(d2 < R::ONE) {
+        if d2.is_nan() || d2 >= R::ONE {
             return Knots::Outside;
         }
         if d2 <= R::ZERO {

@@ -76,6 +76,10 @@ impl Weights {
 
 /// How many impulses a cell holds.
 #[derive(Clone, Debug, PartialEq)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "no allocation: the Poisson table lives in the noise, 392 bytes"
+)]
 enum Count {
     /// Poisson with this distribution.
     Poisson(Poisson),
@@ -337,7 +341,7 @@ mod tests {
             walk(&hash, &impulses, p, 0, |delta, _, _, _| seen.push(delta));
             let mut want = std::vec::Vec::new();
             for n in 0..27 {
-                let o = [n / 9, n / 3 % 3, n % 3].map(|d| d as i32 - 1);
+                let o = [n / 9, n / 3 % 3, n % 3].map(|d: i32| d - 1);
                 let cell: [i32; 3] = core::array::from_fn(|a| p[a].floor() as i32 + o[a]);
                 let f: [f64; 3] = core::array::from_fn(|a| p[a] - p[a].floor());
                 let reach: f64 = (0..3)
