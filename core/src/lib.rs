@@ -99,10 +99,10 @@ pub use real::{I16F16, Real};
 pub mod prelude {
     pub use crate::batch::Grid;
     pub use crate::fractal::{Fractal, Kind, Octaves};
+    pub use crate::impulse::SparseConvolution;
     pub use crate::lattice::{
         CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
     };
-    pub use crate::impulse::SparseConvolution;
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{
         FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,
