@@ -32,8 +32,8 @@ const WEYL: u32 = 0x9E37_79B9;
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct CellRng {
-    key: u32,
-    counter: u32,
+    /// `key + k·φ` after `k` draws: the Weyl sequence's state.
+    state: u32,
 }
 
 impl CellRng {
@@ -48,21 +48,21 @@ impl CellRng {
     #[inline]
     #[must_use]
     pub const fn from_key(key: u32) -> Self {
-        Self { key, counter: 0 }
+        Self { state: key }
     }
 
     /// The next 32 random bits.
     #[inline]
     pub fn next_u32(&mut self) -> u32 {
-        self.counter = self.counter.wrapping_add(1);
-        mix(self.key.wrapping_add(self.counter.wrapping_mul(WEYL)))
+        self.state = self.state.wrapping_add(WEYL);
+        mix(self.state)
     }
 
     /// Skips `n` draws: what drawing them would have done to the generator, so a caller that
     /// needs a draw only sometimes keeps the later draws where they were.
     #[inline]
     pub(crate) fn skip(&mut self, n: u32) {
-        self.counter = self.counter.wrapping_add(n);
+        self.state = self.state.wrapping_add(n.wrapping_mul(WEYL));
     }
 
     /// Uniform in `[0, 1)`: a multiple of 2⁻²⁴, exact in `f32` and `f64`; I16F16 gets it

@@ -271,18 +271,21 @@ pub(crate) fn walk<R: Real, const D: usize>(
             let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
             for _ in 0..impulses.count(&mut rng) {
                 let draw = rng.next_u32();
-                let mut delta = [R::ZERO; D];
+                // The offset along axis a from the impulse to the point.
+                let offset = |a: usize| {
+                    let k = (draw >> (a as u32 * bits)) & mask;
+                    here[a] - R::from_ratio((2 * k + 1) as i32, bits + 1)
+                };
                 let mut d2 = R::ZERO;
                 for a in 0..D {
-                    let k = (draw >> (a as u32 * bits)) & mask;
-                    let d = here[a] - R::from_ratio((2 * k + 1) as i32, bits + 1);
-                    delta[a] = d;
+                    let d = offset(a);
                     d2 = d2 + d.mul_rn(d);
                 }
                 if d2 >= R::ONE {
                     rng.skip(weight_draws + extra);
                     continue;
                 }
+                let delta: [R; D] = core::array::from_fn(offset);
                 let w = match impulses.weights {
                     Weights::Sign => {
                         if draw >> 31 == 1 {
