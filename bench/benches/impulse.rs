@@ -52,6 +52,16 @@ where
             layout.point::<_, D>(noise),
         ));
     }
+    // The batch path (`fill_grid`): each chunk's cells' impulses generated once.
+    all.push((
+        format!("sparse-{D}d cosine, 10 per kernel, batch"),
+        layout.batch::<_, D>(base()),
+    ));
+    let three = base().with_fixed_count(3).expect("a valid count");
+    all.push((
+        format!("sparse-{D}d cosine, 3 per cell fixed, batch"),
+        layout.batch::<_, D>(three),
+    ));
     all
 }
 

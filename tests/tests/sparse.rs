@@ -383,3 +383,64 @@ fn gradient_is_the_derivative() {
         assert!(worst < 1e-6, "{kernel:?}: {worst}");
     }
 }
+
+/// The batch paths are `sample` bit for bit: grids of several steps (chunks within one or two
+/// cells per axis share their cells' impulses) and scattered points (walked one by one), both
+/// kernels, Poisson and fixed counts, both weights, f32 and I16F16.
+#[test]
+fn batches_are_sample_bit_for_bit() {
+    use bandnoise::batch::Grid;
+    let configs = |seed| {
+        let base = SparseConvolution::<3>::new(seed);
+        [
+            base.clone(),
+            base.clone()
+                .with_kernel(Kernel::CatmullRom)
+                .with_density(3.0)
+                .unwrap(),
+            base.clone()
+                .with_fixed_count(2)
+                .unwrap()
+                .with_weights(Weights::Uniform),
+        ]
+    };
+    let mut rng = Rng::from_env(22);
+    for noise in configs(3) {
+        for step in [0.0737f32, 0.01, 0.3, 1.7] {
+            let origin = [rng.f64_in(-100.0, 100.0) as f32, -5.683, 0.37];
+            let grid = Grid::new(origin, [step, step * 0.7, step], [37, 5, 3]);
+            let mut out = vec![0.0f32; grid.len()];
+            noise.fill_grid(&grid, &mut out).unwrap();
+            for (i, v) in out.iter().enumerate() {
+                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
+                assert_eq!(v.to_bits(), noise.sample(p).to_bits(), "{step} {p:?}");
+            }
+            let q = |x: f32| I16F16::from_num(x);
+            let grid = Grid::new(origin.map(q), [q(step), q(step * 0.7), q(step)], [37, 5, 3]);
+            let mut out = vec![I16F16::ZERO; grid.len()];
+            noise.fill_grid(&grid, &mut out).unwrap();
+            for (i, v) in out.iter().enumerate() {
+                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
+                assert_eq!(*v, noise.sample(p), "{step} {p:?}");
+            }
+        }
+        let xs: Vec<f32> = (0..100).map(|_| rng.f64_in(-1e3, 1e3) as f32).collect();
+        let ys: Vec<f32> = (0..100).map(|_| rng.f64_in(-1e3, 1e3) as f32).collect();
+        let zs: Vec<f32> = (0..100).map(|_| rng.f64_in(-1.0, 1.0) as f32).collect();
+        let mut out = vec![0.0f32; 100];
+        noise.fill_points([&xs, &ys, &zs], &mut out).unwrap();
+        for i in 0..100 {
+            let v: f32 = noise.sample([xs[i], ys[i], zs[i]]);
+            assert_eq!(out[i].to_bits(), v.to_bits());
+        }
+    }
+    // 2D, the default.
+    let noise = SparseConvolution::<2>::new(8);
+    let grid = Grid::new([3.217f32, -5.683], [0.0737, 0.0737], [64, 8]);
+    let mut out = vec![0.0f32; grid.len()];
+    noise.fill_grid(&grid, &mut out).unwrap();
+    for (i, v) in out.iter().enumerate() {
+        let p = grid.point([i % 64, i / 64]);
+        assert_eq!(v.to_bits(), noise.sample(p).to_bits(), "{p:?}");
+    }
+}

@@ -36,6 +36,7 @@ mod sparse;
 pub use kernel::Kernel;
 pub use sparse::SparseConvolution;
 
+use crate::batch::LANES;
 use crate::hash::chain::ChainHash;
 use crate::hash::{CellHash, CellRng, Poisson};
 use crate::{Error, Real};
@@ -313,6 +314,155 @@ pub(crate) fn walk<R: Real, const D: usize>(
             a -= 1;
             digit[a] += 1;
             if digit[a] < 3 {
+                break;
+            }
+            digit[a] = 0;
+        }
+        from = a;
+    }
+}
+
+/// [`walk`] for [`LANES`] points at once, each visit bit-identical to the point walk's for
+/// that lane and in the same order: `visit(lane, delta, d², w, rng)`. The cells within reach of
+/// any lane are visited once for all of them (their impulses generated once), in the point
+/// walk's order (first axis slowest), which restricted to each lane's `3^D` cells is that
+/// lane's own order; each lane keeps the cells and impulses the point walk keeps (the same
+/// offsets, squared distances and pruning, computed with the same operations).
+///
+/// Returns `false`, visiting nothing, when the lanes' cells span more than two cells along an
+/// axis (scattered points): the caller then walks each lane alone.
+#[inline]
+pub(crate) fn walk_lanes<R: Real, const D: usize>(
+    hash: &CellHash,
+    impulses: &Impulses,
+    p: &[[R; LANES]; D],
+    extra: u32,
+    mut visit: impl FnMut(usize, [R; D], R, R, &mut CellRng),
+) -> bool {
+    let bits = const { position_bits(D) };
+    let mask = (1u32 << bits) - 1;
+    // The box of cells: one below the lowest lane's to one above the highest's, at most 4
+    // along an axis. Per axis and box cell, for every lane: the lane's coordinate relative to
+    // the cell's corner and its squared distance to the cell, as the point walk has them (2,
+    // out of reach, where the cell is not one of the lane's neighbours).
+    let mut lo = [0i32; D];
+    let mut side = [0usize; D];
+    let mut here = [[[R::ZERO; LANES]; 4]; D];
+    let mut gaps = [[[R::from_i32(2); LANES]; 4]; D];
+    for a in 0..D {
+        let split = p[a].map(Real::split);
+        let (min, max) = split
+            .iter()
+            .fold((i32::MAX, i32::MIN), |(lo, hi), &(c, _)| {
+                (lo.min(c), hi.max(c))
+            });
+        if i64::from(max) - i64::from(min) > 1 {
+            return false;
+        }
+        lo[a] = min;
+        side[a] = (max.wrapping_sub(min) as usize & 1) + 3;
+        for (l, &(c, f)) in split.iter().enumerate() {
+            let g = R::ONE - f;
+            // The lane's own cell is box cell 1 or 2; its neighbours the ones either side.
+            let at = (c.wrapping_sub(min) as usize & 1) + 1;
+            for (o, (b, d)) in [
+                (f + R::ONE, f.mul_rn(f)),
+                (f, R::ZERO),
+                (f - R::ONE, g.mul_rn(g)),
+            ]
+            .into_iter()
+            .enumerate()
+            {
+                if let (Some(h), Some(q)) =
+                    (here[a].get_mut(at + o - 1), gaps[a].get_mut(at + o - 1))
+                {
+                    h[l] = b;
+                    q[l] = d;
+                }
+            }
+        }
+    }
+    let weight_draws = u32::from(impulses.weights == Weights::Uniform);
+    let mut digit = [0usize; D];
+    let mut chain = [0u32; D];
+    let mut from = 0;
+    loop {
+        for a in from..D {
+            let h = if a == 0 { hash.start() } else { chain[a - 1] };
+            let cell = lo[a].wrapping_add(digit[a] as i32 - 1);
+            chain[a] = hash.step(h, cell as u32);
+        }
+        // Digits are below 4; `min` says so to the compiler (no bounds check).
+        let rows: [usize; D] = core::array::from_fn(|a| digit[a].min(3));
+        // The lanes this cell is within reach of. (The point walk prunes a prefix of axes at
+        // 1; squared distances are not negative, so that is the whole sum at 1.)
+        let mut gap = [R::ZERO; LANES];
+        for (a, &row) in rows.iter().enumerate() {
+            for (g, &d) in gap.iter_mut().zip(&gaps[a][row]) {
+                *g = *g + d;
+            }
+        }
+        let reach = gap
+            .iter()
+            .enumerate()
+            .fold(0u32, |m, (l, &g)| m | (u32::from(g < R::ONE) << l));
+        if reach != 0 {
+            let mut rng = CellRng::from_key(chain[D - 1]);
+            for _ in 0..impulses.count(&mut rng) {
+                let draw = rng.next_u32();
+                let u: [R; D] = core::array::from_fn(|a| {
+                    let k = (draw >> (a as u32 * bits)) & mask;
+                    R::from_ratio((2 * k + 1) as i32, bits + 1)
+                });
+                // Every lane's squared distance (lanes out of reach are computed and ignored).
+                let mut d2 = [R::ZERO; LANES];
+                for a in 0..D {
+                    for (s, &h) in d2.iter_mut().zip(&here[a][rows[a]]) {
+                        let d = h - u[a];
+                        *s = *s + d.mul_rn(d);
+                    }
+                }
+                let mut near = d2
+                    .iter()
+                    .enumerate()
+                    .fold(0u32, |m, (l, &s)| m | (u32::from(s < R::ONE) << l))
+                    & reach;
+                // The weight and the kernel's generator, as the point walk draws them.
+                let mut own = rng.clone();
+                rng.skip(weight_draws + extra);
+                if near == 0 {
+                    continue;
+                }
+                let w = match impulses.weights {
+                    Weights::Sign => {
+                        if draw >> 31 == 1 {
+                            R::NEG_ONE
+                        } else {
+                            R::ONE
+                        }
+                    }
+                    Weights::Uniform => {
+                        let k = (own.next_u32() >> 16) as i32 - (1 << 15);
+                        R::from_ratio(2 * k + 1, 16)
+                    }
+                };
+                while near != 0 {
+                    let l = near.trailing_zeros() as usize;
+                    near &= near - 1;
+                    let delta = core::array::from_fn(|a| here[a][rows[a]][l % LANES] - u[a]);
+                    visit(l, delta, d2[l % LANES], w, &mut own.clone());
+                }
+            }
+        }
+        // The next cell of the box: the last axis fastest.
+        let mut a = D;
+        loop {
+            if a == 0 {
+                return true;
+            }
+            a -= 1;
+            digit[a] += 1;
+            if digit[a] < side[a] {
                 break;
             }
             digit[a] = 0;

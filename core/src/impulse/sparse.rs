@@ -14,7 +14,8 @@
 //! root, so it has variance 1 and mean 0 (the weights have mean 0) at every density.
 
 use super::kernel::{Kernel, ball_volume};
-use super::{Impulses, Weights, walk};
+use super::{Impulses, Weights, walk, walk_lanes};
+use crate::batch::{self, LANES};
 use crate::hash::CellHash;
 use crate::{Error, I16F16, Noise, NoiseGradient, Real};
 
@@ -205,6 +206,29 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
 
     fn amplitude_bound(&self) -> f32 {
         SparseConvolution::amplitude_bound(self)
+    }
+
+    /// Lanes near each other (a grid's chunk) share the walk: each cell's impulses are
+    /// generated once for all of them ([`walk_lanes`]); scattered lanes are walked one by
+    /// one. Bit-identical to [`sample`](Noise::sample) either way.
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        let kernel = self.kernel;
+        let mut totals = [R::ZERO; LANES];
+        let shared = walk_lanes(&self.hash, &self.impulses, p, 0, |l, _, d2, w, _| {
+            if let Some(t) = totals.get_mut(l) {
+                *t = *t + w.mul_rn(kernel.at(d2));
+            }
+        });
+        if shared {
+            let scale = R::from_setting(self.scale, self.scale_fixed);
+            for (o, t) in out.iter_mut().zip(totals) {
+                *o = t.mul_rn(scale).canonical();
+            }
+        } else {
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = self.sample(batch::lane(p, l));
+            }
+        }
     }
 }
 
