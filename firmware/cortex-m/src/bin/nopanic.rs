@@ -13,6 +13,7 @@ use core::panic::PanicInfo;
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
+use bandnoise::impulse::{Kernel, SparseConvolution};
 use bandnoise::lattice::{
     CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
 };
@@ -117,6 +118,17 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     let mut out = [R::ZERO; 60];
     if Perlin::new(5).fill_grid(&grid, &mut out).is_ok() {
         add(out.get(black_box(17)).copied().unwrap_or(R::ZERO));
+    }
+    // Sparse convolution noise in batches (the shared walk of a chunk's cells), with any
+    // density and fixed count.
+    let sparse = SparseConvolution::<2>::new(black_box(4)).with_kernel(Kernel::CatmullRom);
+    if let Ok(n) = sparse.clone().with_density(black_box(7.5)) {
+        if n.fill_grid(&grid, &mut out).is_ok() {
+            add(out.get(black_box(31)).copied().unwrap_or(R::ZERO));
+        }
+    }
+    if let Ok(n) = sparse.with_fixed_count(black_box(3)) {
+        add(n.sample_with_gradient([p[1], p[2]]).1[1]);
     }
     let xs = black_box([p[0]; 20]);
     let ys = black_box([p[3]; 20]);
