@@ -209,6 +209,36 @@ const fn position_bits(d: usize) -> u32 {
     if d <= 2 { 15 } else { 31 / d as u32 }
 }
 
+/// An impulse's coordinate along axis `a` within its cell, from its position draw: the
+/// centre of one of `2^bits` equal bins, `(2k + 1)/2^(bits+1)`.
+#[inline]
+fn position<R: Real, const D: usize>(draw: u32, a: usize) -> R {
+    let bits = const { position_bits(D) };
+    let k = (draw >> (a as u32 * bits)) & ((1u32 << bits) - 1);
+    R::from_ratio((2 * k + 1) as i32, bits + 1)
+}
+
+impl Weights {
+    /// An impulse's weight: the sign from its position `draw`'s top bit, or uniform from the
+    /// next draw of `rng`.
+    #[inline]
+    fn draw<R: Real>(self, draw: u32, rng: &mut CellRng) -> R {
+        match self {
+            Weights::Sign => {
+                if draw >> 31 == 1 {
+                    R::NEG_ONE
+                } else {
+                    R::ONE
+                }
+            }
+            Weights::Uniform => {
+                let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
+                R::from_ratio(2 * k + 1, 16)
+            }
+        }
+    }
+}
+
 /// Calls `visit(delta, d², w, rng)` for each impulse within distance 1 of `p` (in cell units),
 /// in a fixed order: the walk of the module docs. `visit` gets the offset from the impulse to
 /// `p`, its squared length (below 1), the weight, and a generator from which it may take
@@ -225,8 +255,6 @@ pub(crate) fn walk<R: Real, const D: usize>(
     extra: u32,
     mut visit: impl FnMut([R; D], R, R, &mut CellRng),
 ) {
-    let bits = const { position_bits(D) };
-    let mask = (1u32 << bits) - 1;
     // Per axis and offset −1, 0, 1: the cell, the point's coordinate relative to the cell's
     // corner, and the squared distance from the point to the cell.
     let mut cells = [[0u32; 3]; D];
@@ -273,10 +301,7 @@ pub(crate) fn walk<R: Real, const D: usize>(
             for _ in 0..impulses.count(&mut rng) {
                 let draw = rng.next_u32();
                 // The offset along axis a from the impulse to the point.
-                let offset = |a: usize| {
-                    let k = (draw >> (a as u32 * bits)) & mask;
-                    here[a] - R::from_ratio((2 * k + 1) as i32, bits + 1)
-                };
+                let offset = |a: usize| here[a] - position::<R, D>(draw, a);
                 let mut d2 = R::ZERO;
                 for a in 0..D {
                     let d = offset(a);
@@ -287,19 +312,7 @@ pub(crate) fn walk<R: Real, const D: usize>(
                     continue;
                 }
                 let delta: [R; D] = core::array::from_fn(offset);
-                let w = match impulses.weights {
-                    Weights::Sign => {
-                        if draw >> 31 == 1 {
-                            R::NEG_ONE
-                        } else {
-                            R::ONE
-                        }
-                    }
-                    Weights::Uniform => {
-                        let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
-                        R::from_ratio(2 * k + 1, 16)
-                    }
-                };
+                let w = impulses.weights.draw(draw, &mut rng);
                 let mut own = rng.clone();
                 rng.skip(extra);
                 visit(delta, d2, w, &mut own);
@@ -339,8 +352,6 @@ pub(crate) fn walk_lanes<R: Real, const D: usize>(
     extra: u32,
     mut visit: impl FnMut(usize, [R; D], R, R, &mut CellRng),
 ) -> bool {
-    let bits = const { position_bits(D) };
-    let mask = (1u32 << bits) - 1;
     // The box of cells: one below the lowest lane's to one above the highest's, at most 4
     // along an axis. Per axis and box cell, for every lane: the lane's coordinate relative to
     // the cell's corner and its squared distance to the cell, as the point walk has them (2,
@@ -410,10 +421,7 @@ pub(crate) fn walk_lanes<R: Real, const D: usize>(
             let mut rng = CellRng::from_key(chain[D - 1]);
             for _ in 0..impulses.count(&mut rng) {
                 let draw = rng.next_u32();
-                let u: [R; D] = core::array::from_fn(|a| {
-                    let k = (draw >> (a as u32 * bits)) & mask;
-                    R::from_ratio((2 * k + 1) as i32, bits + 1)
-                });
+                let u: [R; D] = core::array::from_fn(|a| position::<R, D>(draw, a));
                 // Every lane's squared distance (lanes out of reach are computed and ignored).
                 let mut d2 = [R::ZERO; LANES];
                 for a in 0..D {
@@ -433,19 +441,7 @@ pub(crate) fn walk_lanes<R: Real, const D: usize>(
                 if near == 0 {
                     continue;
                 }
-                let w = match impulses.weights {
-                    Weights::Sign => {
-                        if draw >> 31 == 1 {
-                            R::NEG_ONE
-                        } else {
-                            R::ONE
-                        }
-                    }
-                    Weights::Uniform => {
-                        let k = (own.next_u32() >> 16) as i32 - (1 << 15);
-                        R::from_ratio(2 * k + 1, 16)
-                    }
-                };
+                let w = impulses.weights.draw(draw, &mut own);
                 while near != 0 {
                     let l = near.trailing_zeros() as usize;
                     near &= near - 1;
