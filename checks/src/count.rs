@@ -1,6 +1,7 @@
 //! The workloads of `scripts/count-instructions.sh`: each runs [`SAMPLES`] samples of one noise
 //! between two marker calls, so QEMU's instruction trace can count what one sample costs.
 
+use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
 use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
@@ -36,6 +37,18 @@ pub const OUTPUT_NAMES: [&str; 7] = [
     "led frame",
     "wavelet 2D I16F16 varied spread",
     "wavelet 2D I16F16 spread",
+];
+
+/// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
+/// density (10 impulses per kernel volume) and at 3 impulses per cell, with their own
+/// baseline. A program of its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
+pub const IMPULSE_NAMES: [&str; 6] = [
+    "baseline impulse",
+    "sparse 2D I16F16",
+    "sparse 2D f32",
+    "sparse 3D I16F16",
+    "sparse 3D f32",
+    "sparse 3D I16F16 3 per cell",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -128,5 +141,21 @@ pub fn run_outputs(begin: fn(), end: fn()) -> u32 {
     let v = w.with_tiling(Tiling::Varied);
     acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(v.sample(q)));
     acc ^= workload_at::<I16F16, 2>(begin, end, tile_point, |q| bits(w.sample(q)));
+    acc
+}
+
+/// Runs the workloads of [`IMPULSE_NAMES`] as [`run`] does.
+pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
+    let (two, three) = (
+        SparseConvolution::<2>::new(1),
+        SparseConvolution::<3>::new(1),
+    );
+    let fixed = three.clone().with_fixed_count(3).unwrap_or(three.clone());
+    let mut acc = workload::<I16F16, 2>(begin, end, |q| bits(q[0] + q[1]));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(two.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(two.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(three.sample(q)));
+    acc ^= workload::<f32, 3>(begin, end, |q| bits(three.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(fixed.sample(q)));
     acc
 }

@@ -119,6 +119,26 @@ await test('each wavelet tiling gives a different image', async () => {
   await set('zoom', '32');
 });
 
+await test('sparse noise: density and kernel controls change the image', async () => {
+  await set('kind', 'sparse');
+  const hashes = new Map();
+  for (const [density, kernel] of [['10', 'cosine'], ['1', 'cosine'], ['10', 'catmull-rom']]) {
+    await set('density', density);
+    await set('kernel', kernel);
+    const s = await canvas('noise');
+    assert.ok(s.variance > 200, `${density} ${kernel}: variance ${s.variance}`);
+    assert.equal(await message(), '');
+    hashes.set(`${density} ${kernel}`, s.hash);
+    await page.screenshot({ path: `${artifacts}/demo-sparse-${density}-${kernel}.png` });
+  }
+  assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+  await set('density', '1000');
+  assert.match(await message(), /impulse density 1000 must be/);
+  await set('density', '10');
+  await set('kernel', 'cosine');
+  assert.equal(await message(), '');
+});
+
 await test('dragging a band-weight bar changes the spectrum', async () => {
   await set('kind', 'multiband');
   const before = await canvas('spectrum');

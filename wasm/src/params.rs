@@ -3,6 +3,7 @@
 
 use bandnoise::Error;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
+use bandnoise::impulse::Kernel;
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Tiling};
 use wasm_bindgen::prelude::*;
@@ -105,6 +106,12 @@ fn describe(e: Error) -> String {
         Error::NotPeriodic(noise) => {
             format!("{noise} noise is not a lattice noise and cannot be wrapped to a period")
         }
+        Error::Density { density, min, max } => format!(
+            "impulse density {} must be finite and in [{}, {}] impulses per kernel volume",
+            num(density.into()),
+            num(min.into()),
+            num(max.into())
+        ),
         // The page asks the core only for what is refused above (its kinds have a 3D form and
         // its period has 3 axes, so building the spec in 3D is not refused).
         _ => "invalid settings".into(),
@@ -125,7 +132,9 @@ impl Params {
     /// 1e6); a non-finite pan, time, lacunarity or gain; octaves outside 1..=16; a period that
     /// is not a whole number in 0..=65536, or given for wavelet noise; band weights that are
     /// not finite, too many, or all zero for multiband noise; a tiling other than varied,
-    /// blended or periodic (used by wavelet and multiband noise, ignored by the others);
+    /// blended or periodic (used by wavelet and multiband noise, ignored by the others); a
+    /// density (impulses per kernel volume) outside the core's range or a kernel other than
+    /// cosine or catmull-rom (used by sparse noise, ignored by the others);
     /// projection asked for a lattice noise; filtering asked for a lattice noise without a
     /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
     /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
@@ -147,6 +156,8 @@ impl Params {
         band_weights: &[f32],
         distribution: &str,
         tiling: &str,
+        density: f64,
+        kernel: &str,
         projected: bool,
         filtered: bool,
         infinite: bool,
@@ -229,6 +240,23 @@ impl Params {
         };
         if base.is_wavelet() {
             spec = spec.with_tiling(tiling).map_err(describe)?;
+        }
+        let kernel = match kernel {
+            "cosine" => Kernel::Cosine,
+            "catmull-rom" => Kernel::CatmullRom,
+            _ => {
+                return Err(format!(
+                    "kernel must be cosine or catmull-rom, not \"{kernel}\""
+                ));
+            }
+        };
+        let density = finite("density", density)?;
+        if base.is_impulse() {
+            // The core checks the range and says why.
+            spec = spec
+                .with_kernel(kernel)
+                .and_then(|s| s.with_density(density))
+                .map_err(describe)?;
         }
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if base == Base::Multiband {

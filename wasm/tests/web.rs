@@ -25,6 +25,8 @@ struct Args<'a> {
     octaves: f64,
     bands: &'a [f32],
     tiling: &'a str,
+    density: f64,
+    kernel: &'a str,
     projected: bool,
     filtered: bool,
     infinite: bool,
@@ -42,6 +44,8 @@ const ARGS: Args = Args {
     octaves: 6.0,
     bands: &BANDS,
     tiling: "blended",
+    density: 10.0,
+    kernel: "cosine",
     projected: false,
     filtered: false,
     infinite: false,
@@ -65,6 +69,8 @@ impl Args<'_> {
             self.bands,
             "gaussian",
             self.tiling,
+            self.density,
+            self.kernel,
             self.projected,
             self.filtered,
             self.infinite,
@@ -362,6 +368,29 @@ fn bad_parameters_are_refused_with_a_message() {
     );
     refused(
         Args {
+            kind: "sparse",
+            density: 500.0,
+            ..ARGS
+        },
+        "impulse density 500 must be",
+    );
+    refused(
+        Args {
+            kind: "sparse",
+            density: f64::NAN,
+            ..ARGS
+        },
+        "density",
+    );
+    refused(
+        Args {
+            kernel: "gauss",
+            ..ARGS
+        },
+        "kernel must be",
+    );
+    refused(
+        Args {
             filtered: true,
             ..ARGS
         },
@@ -394,4 +423,50 @@ fn bad_parameters_are_refused_with_a_message() {
         "infinite zoom is multiband noise on its own",
     );
     assert!(Demo::new(100).is_err());
+}
+
+/// Sparse noise's controls: the density and the kernel change the image (a sparser noise has
+/// a heavier-tailed histogram: more of it beyond 2σ), and other noises ignore them.
+#[wasm_bindgen_test]
+fn sparse_density_and_kernel_change_the_image() {
+    let ctx = canvas();
+    let render = |args: Args| {
+        let mut demo = Demo::new(64).unwrap();
+        demo.render(&args.build().unwrap());
+        demo.draw(&ctx).unwrap();
+        let pixels = ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0;
+        (pixels, demo.histogram())
+    };
+    let sparse = Args {
+        kind: "sparse",
+        zoom: 8.0,
+        ..ARGS
+    };
+    let (dense, dense_hist) = render(sparse);
+    let (lumpy, lumpy_hist) = render(Args {
+        density: 1.0,
+        ..sparse
+    });
+    let (peachey, _) = render(Args {
+        kernel: "catmull-rom",
+        ..sparse
+    });
+    assert!(dense != lumpy, "the density changes the image");
+    assert!(dense != peachey, "the kernel changes the image");
+    // Bins span ±4σ: the outer quarters are beyond 2σ.
+    let tails = |h: &[u32]| {
+        let q = h.len() / 4;
+        h[..q].iter().chain(&h[h.len() - q..]).sum::<u32>()
+    };
+    assert!(
+        tails(&lumpy_hist) > tails(&dense_hist),
+        "{lumpy_hist:?} {dense_hist:?}"
+    );
+    // Ignored by the other noises.
+    let other = Args {
+        density: 2.0,
+        kernel: "catmull-rom",
+        ..ARGS
+    };
+    assert!(render(ARGS).0 == render(other).0, "perlin ignores them");
 }

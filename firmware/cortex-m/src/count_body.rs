@@ -1,10 +1,19 @@
-// The body of the `count` and `count-outputs` programs (`include!`d: each defines `OUTPUTS`).
+// The body of the `count`, `count-outputs` and `count-impulse` programs (`include!`d: each
+// defines `SET`).
 
 use core::panic::PanicInfo;
 
 use cortex_m as _;
 use cortex_m_rt::entry;
 use cortex_m_semihosting::debug;
+
+/// Which workloads of `bandnoise_checks::count` a program runs.
+#[allow(dead_code, reason = "each program uses one")]
+enum Set {
+    Noises,
+    Outputs,
+    Impulse,
+}
 
 #[inline(never)]
 #[unsafe(no_mangle)]
@@ -20,11 +29,11 @@ fn bandnoise_mark_end() {
 
 #[entry]
 fn main() -> ! {
-    // Which set is a constant of the program, so the other is not compiled in.
-    let run = if OUTPUTS {
-        bandnoise_checks::count::run_outputs
-    } else {
-        bandnoise_checks::count::run
+    // Which set is a constant of the program, so the others are not compiled in.
+    let run = match SET {
+        Set::Noises => bandnoise_checks::count::run,
+        Set::Outputs => bandnoise_checks::count::run_outputs,
+        Set::Impulse => bandnoise_checks::count::run_impulse,
     };
     core::hint::black_box(run(bandnoise_mark_begin, bandnoise_mark_end));
     debug::exit(debug::EXIT_SUCCESS);

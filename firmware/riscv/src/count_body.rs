@@ -1,9 +1,18 @@
-// The body of the `count` and `count-outputs` programs (`include!`d: each defines `OUTPUTS`).
+// The body of the `count`, `count-outputs` and `count-impulse` programs (`include!`d: each
+// defines `SET`).
 
 use core::panic::PanicInfo;
 
 /// The virt machine's test device: 0x5555 passes.
 const TEST_DEVICE: *mut u32 = 0x0010_0000 as *mut u32;
+
+/// Which workloads of `bandnoise_checks::count` a program runs.
+#[allow(dead_code, reason = "each program uses one")]
+enum Set {
+    Noises,
+    Outputs,
+    Impulse,
+}
 
 #[inline(never)]
 #[unsafe(no_mangle)]
@@ -25,11 +34,11 @@ fn exit(code: u32) -> ! {
 
 #[riscv_rt::entry]
 fn main() -> ! {
-    // Which set is a constant of the program, so the other is not compiled in.
-    let run = if OUTPUTS {
-        bandnoise_checks::count::run_outputs
-    } else {
-        bandnoise_checks::count::run
+    // Which set is a constant of the program, so the others are not compiled in.
+    let run = match SET {
+        Set::Noises => bandnoise_checks::count::run,
+        Set::Outputs => bandnoise_checks::count::run_outputs,
+        Set::Impulse => bandnoise_checks::count::run_impulse,
     };
     core::hint::black_box(run(bandnoise_mark_begin, bandnoise_mark_end));
     exit(0x5555)

@@ -4,7 +4,7 @@
 #![no_std]
 #![no_main]
 
-/// Runs `run_outputs` instead of `run`.
-const OUTPUTS: bool = false;
+/// The workloads this program runs.
+const SET: Set = Set::Noises;
 
 include!("../count_body.rs");
