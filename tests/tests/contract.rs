@@ -24,6 +24,7 @@ use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::lattice::Periodic;
 use bandnoise::prelude::*;
+use bandnoise::spec::{Base, Spec};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tiling, Wavelet, erf,
     unit_normal,
@@ -359,6 +360,38 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         let name = &format!("fbm of multiband {distribution:?}");
         sweep_noise::<R, 2, _>(name, &f, rng);
         sweep_filtered::<R, 2, _>(name, &f, rng);
+    }
+
+    // Sparse convolution noise, 1D–4D: the default, Peachey's kernel with uniform weights at a
+    // high density, a fixed count at the lowest density's scale; batches and gradients.
+    let sparse = [
+        ("sparse", Spec::new(Base::Sparse, 4)),
+        (
+            "sparse catmull-rom uniform 60",
+            "sparse seed=4 kernel=catmull-rom weights=uniform density=60"
+                .parse()
+                .expect("valid"),
+        ),
+        (
+            "sparse 1 per cell",
+            "sparse seed=4 count=1".parse().expect("valid"),
+        ),
+        (
+            "sparse 0.01",
+            "sparse seed=4 density=0.01".parse().expect("valid"),
+        ),
+    ];
+    for (name, spec) in sparse {
+        let n1 = spec.build::<1>().expect("1D");
+        let n2 = spec.build::<2>().expect("2D");
+        let n3 = spec.build::<3>().expect("3D");
+        let n4 = spec.build::<4>().expect("4D");
+        sweep_noise::<R, 1, _>(name, &n1, rng);
+        sweep_noise::<R, 2, _>(name, &n2, rng);
+        sweep_noise::<R, 3, _>(name, &n3, rng);
+        sweep_noise::<R, 4, _>(name, &n4, rng);
+        sweep_gradient::<R, 2, _>(name, &n2, |p| n2.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(name, &n3, |p| n3.sample_with_gradient(p), rng);
     }
 
     // The error function behind the uniform distribution.
