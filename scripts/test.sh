@@ -34,6 +34,7 @@ cargo bench -p bandnoise-tests --bench wavelet -- --test
 # Against the peer crates (each workload once; the measured run is scripts/bench-peers.sh).
 cargo bench -p bandnoise-bench --bench peers -- --test
 cargo bench -p bandnoise-bench --bench spec -- --test
+cargo bench -p bandnoise-bench --bench impulse -- --test
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh

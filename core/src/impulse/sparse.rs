@@ -209,7 +209,7 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
     }
 
     /// Lanes near each other (a grid's chunk) share the walk: each cell's impulses are
-    /// generated once for all of them ([`walk_lanes`]); scattered lanes are walked one by
+    /// generated once for all of them (the module's shared walk); scattered lanes are walked one by
     /// one. Bit-identical to [`sample`](Noise::sample) either way.
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         let kernel = self.kernel;
