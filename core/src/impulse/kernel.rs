@@ -126,8 +126,9 @@ impl Kernel {
         }
     }
 
-    /// The kernel at distance `d`, and its derivative with respect to `d² = s`, in `f64`
-    /// (what the tables hold, and what tests compare with).
+    /// The kernel at squared distance `s` (`h(√s)`) and its derivative with respect to `s`,
+    /// in `f64`, from the kernel's formula (what the tables hold, and what tests compare
+    /// with); both 0 from `s = 1` on.
     #[must_use]
     pub const fn exact(self, s: f64) -> (f64, f64) {
         if s >= 1.0 {

@@ -23,8 +23,8 @@ use crate::{Error, I16F16, Noise, NoiseGradient, Real};
 ///
 /// The kernel's radius is one unit: sample at `x · f` for features `1/f` units wide. The
 /// default is Lewis's cosine kernel at 10 impulses per kernel volume with Poisson counts and
-/// ±1 weights (closer to Gaussian than uniform weights: see [`Weights`]); the builders change each (a smaller density is faster, see
-/// `bench/README.md`).
+/// ±1 weights (closer to Gaussian than uniform weights: see [`Weights`]); the builders change
+/// each (a smaller density is faster: `bench/README.md`).
 ///
 /// # Amplitude
 ///
