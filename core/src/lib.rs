@@ -85,11 +85,13 @@ pub mod hash;
 pub mod impulse;
 pub mod lattice;
 pub mod levels;
+mod radial;
 mod noise;
 mod real;
 pub mod spec;
 mod special;
 pub mod wavelet;
+pub mod wiener;
 
 pub use error::Error;
 pub use noise::{FilteredNoise, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient};

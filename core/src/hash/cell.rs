@@ -8,6 +8,7 @@
 //! operations only, so the hash is the same on every target.
 
 use super::chain::{self, ChainHash, Order};
+use crate::Real;
 
 /// Wellons' `lowbias32`: a bijection of `u32` in which each input bit flips each output bit
 /// with probability close to ½.
@@ -69,6 +70,71 @@ impl CellHash {
         chain::cell(Order::XFirst, self.start, cell.map(|c| c as u32), |h, c| {
             self.step(h, c)
         })
+    }
+}
+
+impl CellHash {
+    /// Calls `visit(digits, hash, d²)` for each cell of a box around a point that is within
+    /// `reach` of it (`d²`: its squared distance), in a fixed order: the box is `N` cells along each axis, axis `a`'s `k`th
+    /// being `cells[a][k]` at squared distance `gaps[a][k]` from the point along that axis; a
+    /// cell is within reach when the sum of its axes' squared distances is below `reach`.
+    ///
+    /// The cells are visited as an odometer over the axes, the first axis slowest, so the
+    /// hash's chain (first axis folded first) shares its prefixes, and a prefix of axes whose
+    /// distances alone reach `reach` skips all the cells beyond it at once.
+    #[inline]
+    pub(crate) fn near<R: Real, const D: usize, const N: usize>(
+        &self,
+        cells: &[[u32; N]; D],
+        gaps: &[[R; N]; D],
+        reach: R,
+        mut visit: impl FnMut(&[usize; D], u32, R),
+    ) {
+        // `digit[a]` is axis a's box index; `chain[a]` and `gap[a]` are the hash and the
+        // squared distance over axes 0..=a; axes from `from` on need recomputing.
+        let mut digit = [0usize; D];
+        let mut chain = [0u32; D];
+        let mut gap = [R::ZERO; D];
+        let mut from = 0;
+        loop {
+            let mut reached = true;
+            for a in from..D {
+                let (h, g) = if a == 0 {
+                    (self.start, R::ZERO)
+                } else {
+                    (chain[a - 1], gap[a - 1])
+                };
+                // `min` says the digit is in the box to the compiler (no bounds check).
+                let o = digit[a].min(N - 1);
+                gap[a] = g + gaps[a][o];
+                if gap[a] >= reach {
+                    // Every cell with this prefix is out of reach: skip them all.
+                    for d in digit.iter_mut().skip(a + 1) {
+                        *d = N - 1;
+                    }
+                    reached = false;
+                    break;
+                }
+                chain[a] = self.step(h, cells[a][o]);
+            }
+            if reached {
+                visit(&digit, chain[D - 1], gap[D - 1]);
+            }
+            // The next cell: the last axis fastest.
+            let mut a = D;
+            loop {
+                if a == 0 {
+                    return;
+                }
+                a -= 1;
+                digit[a] += 1;
+                if digit[a] < N {
+                    break;
+                }
+                digit[a] = 0;
+            }
+            from = a;
+        }
     }
 }
 

@@ -244,9 +244,9 @@ impl Weights {
 /// `p`, its squared length (below 1), the weight, and a generator from which it may take
 /// `extra` draws.
 ///
-/// The `3^D` cells are visited as an odometer over the axes, the first axis slowest, so the
-/// cell hash's chain (first axis folded first) shares its prefixes, and a prefix of axes whose
-/// distances alone reach 1 skips all the cells beyond it at once.
+/// The `3^D` cells are visited by [`CellHash::near`]: an odometer over the axes, the first
+/// axis slowest, so the cell hash's chain (first axis folded first) shares its prefixes, and a
+/// prefix of axes whose distances alone reach 1 skips all the cells beyond it at once.
 #[inline]
 pub(crate) fn walk<R: Real, const D: usize>(
     hash: &CellHash,
@@ -268,71 +268,29 @@ pub(crate) fn walk<R: Real, const D: usize>(
         gaps[a] = [f.mul_rn(f), R::ZERO, g.mul_rn(g)];
     }
     let weight_draws = u32::from(impulses.weights == Weights::Uniform);
-    // The odometer: `digit[a]` is axis a's offset + 1; `chain[a]` and `gap[a]` are the hash and
-    // the squared distance over axes 0..=a; axes from `from` on need recomputing.
-    let mut digit = [0usize; D];
-    let mut chain = [0u32; D];
-    let mut gap = [R::ZERO; D];
-    let mut from = 0;
-    loop {
-        let mut reached = true;
-        for a in from..D {
-            let (h, g) = if a == 0 {
-                (hash.start(), R::ZERO)
-            } else {
-                (chain[a - 1], gap[a - 1])
-            };
-            // Digits are 0, 1 or 2; `min` says so to the compiler (no bounds check).
-            let o = digit[a].min(2);
-            gap[a] = g + gaps[a][o];
-            if gap[a] >= R::ONE {
-                // Every cell with this prefix is out of reach: skip them all.
-                for d in digit.iter_mut().skip(a + 1) {
-                    *d = 2;
-                }
-                reached = false;
-                break;
+    hash.near(&cells, &gaps, R::ONE, |digit, key, _| {
+        let mut rng = CellRng::from_key(key);
+        let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
+        for _ in 0..impulses.count(&mut rng) {
+            let draw = rng.next_u32();
+            // The offset along axis a from the impulse to the point.
+            let offset = |a: usize| here[a] - position::<R, D>(draw, a);
+            let mut d2 = R::ZERO;
+            for a in 0..D {
+                let d = offset(a);
+                d2 = d2 + d.mul_rn(d);
             }
-            chain[a] = hash.step(h, cells[a][o]);
+            if d2 >= R::ONE {
+                rng.skip(weight_draws + extra);
+                continue;
+            }
+            let delta: [R; D] = core::array::from_fn(offset);
+            let w = impulses.weights.draw(draw, &mut rng);
+            let mut own = rng.clone();
+            rng.skip(extra);
+            visit(delta, d2, w, &mut own);
         }
-        if reached {
-            let mut rng = CellRng::from_key(chain[D - 1]);
-            let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
-            for _ in 0..impulses.count(&mut rng) {
-                let draw = rng.next_u32();
-                // The offset along axis a from the impulse to the point.
-                let offset = |a: usize| here[a] - position::<R, D>(draw, a);
-                let mut d2 = R::ZERO;
-                for a in 0..D {
-                    let d = offset(a);
-                    d2 = d2 + d.mul_rn(d);
-                }
-                if d2 >= R::ONE {
-                    rng.skip(weight_draws + extra);
-                    continue;
-                }
-                let delta: [R; D] = core::array::from_fn(offset);
-                let w = impulses.weights.draw(draw, &mut rng);
-                let mut own = rng.clone();
-                rng.skip(extra);
-                visit(delta, d2, w, &mut own);
-            }
-        }
-        // The next cell: the last axis fastest.
-        let mut a = D;
-        loop {
-            if a == 0 {
-                return;
-            }
-            a -= 1;
-            digit[a] += 1;
-            if digit[a] < 3 {
-                break;
-            }
-            digit[a] = 0;
-        }
-        from = a;
-    }
+    });
 }
 
 /// [`walk`] for [`LANES`] points at once, each visit bit-identical to the point walk's for

@@ -13,7 +13,8 @@
 //! `Var η = λ E[a²] ∫h²` (λ impulses per unit volume), and the noise is divided by its square
 //! root, so it has variance 1 and mean 0 (the weights have mean 0) at every density.
 
-use super::kernel::{Kernel, ball_volume};
+use super::kernel::Kernel;
+use crate::radial::ball_volume;
 use super::{Impulses, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
 use crate::hash::CellHash;

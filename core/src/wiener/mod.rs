@@ -1,0 +1,459 @@
+//! Wiener-interpolated lattice noise (Lewis 1989, §3): uncorrelated random values at the
+//! integer lattice points, interpolated by the linear estimate that is optimal for a chosen
+//! covariance.
+//!
+//! # Lewis's construction
+//!
+//! The estimate at `x` is a weighted sum of the lattice values `η_j` of a neighbourhood,
+//! `η̂ = Σ a_j η_j` (eq. 2), whose weights minimise `E[(η − η̂)²]` (eq. 3). The orthogonality
+//! principle gives `C a = c` (eq. 5), with `C_kj = C(t_j − t_k)` the covariance between the
+//! data and `c_k = C(x − t_k)`, so `η̂ = ηᵀ C⁻¹ c` (eq. 6).
+//!
+//! bandnoise's neighbourhood is the `4^D` lattice points around `x`'s cell (offsets −1 to 2
+//! along each axis). Because the lattice values are uncorrelated, the covariance must vanish
+//! at every non-zero lattice offset, `C(√(i² + j² + k²)) = 0` (Lewis's lattice condition,
+//! end of §3). Both [`Covariance`]s satisfy it, so the neighbourhood's matrix `C` is `C(0)·I`
+//! and `C⁻¹` is `I/C(0)`: this is computed at compile time from the covariance's formula
+//! (the matrix built entry by entry over the `4^D × 4^D` pairs) and asserted, and a sample is
+//! the dot product `η̂ = Σ η_j C(x − t_j)/C(0)` over the lattice points within the
+//! covariance's support (the others have `c_j = 0`).
+//!
+//! # What is realised
+//!
+//! The estimate is exact at the lattice points (`η̂(t_j) = η_j`) and smoother between them
+//! than a process with covariance `C`: its covariance, averaged over the position within a
+//! cell, is `σ_η² (h ⋆ h)` with `h = C/C(0)`, so its power spectrum is `σ_η² |Ĥ(f)|²`, the
+//! requested spectrum `Ĉ(f)` squared (up to scale). The noise is normalised by that
+//! closed form (`σ² = σ_η² ∫h²`), so its variance averaged over a cell is 1; it is
+//! cyclostationary, like every interpolated lattice noise: the variance is
+//! `σ_η² Σ_j h(x − t_j)²/σ²`, largest (`1/∫h²`: 4.5 in 2D, 9.3 in 3D for the low-pass
+//! covariance) at the lattice points. Both the requested and realised covariance and spectrum
+//! are measured in `tests/tests/wiener.rs`. This is the "artificially constrained" covariance
+//! structure that led Lewis to sparse convolution (§4).
+//!
+//! # Lattice values
+//!
+//! Each lattice point's value is the sum of the four bytes of its [`CellHash`], centred:
+//! `(b₀ + b₁ + b₂ + b₃ − 510)/512`, an approximately Gaussian value (Irwin-Hall; excess
+//! kurtosis −0.3) with `σ_η² = 4 (256² − 1)/12 / 512²`, exact in every number type.
+
+use crate::batch::LANES;
+use crate::hash::CellHash;
+use crate::radial::{Profile, Table};
+use crate::{I16F16, Noise, NoiseGradient, Real};
+
+/// A covariance of Wiener-interpolated noise: an isotropic function of the distance that
+/// satisfies Lewis's lattice condition (0 at every non-zero lattice offset), tabulated by
+/// squared distance as the crate's radial functions are.
+///
+/// | covariance | support | spectrum | table | table error |
+/// |---|---|---|---|---|
+/// | [`LowPass`](Self::LowPass) | radius 1: the `2^D` corners of the cell | low-pass | 257 knots | 3e-6; 2.5e-4 for `d < 1/16` |
+/// | [`BandPass`](Self::BandPass) | radius 2: up to `4^D` points | band-pass, 0 at `f = 0`, peak near 0.8–1 cycle per cell | 129 knots per dimension | 6e-6 |
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::wiener::Covariance;
+///
+/// // Normalised to 1 at 0, and 0 at every other lattice point.
+/// assert_eq!(Covariance::LowPass.at::<f32, 2>(0.0), 1.0);
+/// for n in 1..=8 {
+///     assert_eq!(Covariance::BandPass.at::<f32, 2>(n as f32), 0.0);
+/// }
+/// assert!(Covariance::BandPass.at::<f32, 2>(0.5) < 0.0);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Covariance {
+    /// Wendland's compactly supported `ψ₃,₁(d) = (1 − d)⁴(4d + 1)` for `d < 1` (Wendland
+    /// 1995): positive definite in up to three dimensions, `C²`, zero from `d = 1` on, so
+    /// the lattice condition holds trivially and only the cell's `2^D` corners contribute.
+    /// Low-pass.
+    #[default]
+    LowPass,
+    /// An oscillating covariance of radius 2 that is 0 at `d = 1, √2, √3` (the lattice
+    /// distances within its reach; `d = 2` is its rim) and integrates to 0, so its spectrum
+    /// vanishes at the origin: a polynomial in `s = d²`,
+    /// `(1 − s)(2 − s)(3 − s)/6 · (1 − s/4)⁸ · (1 + a₁s + a₂s² + a₃s³)`, `a₁` computed at
+    /// compile time from `∫h = 0` in `D` dimensions and `a₂, a₃` chosen per dimension (a
+    /// numerical search) to keep its spectrum non-negative. It is not exactly positive
+    /// definite: its spectrum dips to −2.5e-4 of its peak (measured).
+    BandPass,
+}
+
+impl Covariance {
+    /// The radius of the support, in cells.
+    #[must_use]
+    pub const fn radius(self) -> u32 {
+        match self {
+            Covariance::LowPass => 1,
+            Covariance::BandPass => 2,
+        }
+    }
+
+    /// The covariance over `C(0)`, `h(√s)`, at squared distance `s` in `D` dimensions (1 to
+    /// 4), from its table: 0 from the rim on (and for NaN), 1 for `s ≤ 0`.
+    #[inline]
+    #[must_use]
+    pub fn at<R: Real, const D: usize>(self, s: R) -> R {
+        match self {
+            Covariance::LowPass => LOW_PASS.at(s),
+            Covariance::BandPass => match D {
+                1 => BAND_PASS_1.at(s),
+                2 => BAND_PASS_2.at(s),
+                3 => BAND_PASS_3.at(s),
+                _ => BAND_PASS_4.at(s),
+            },
+        }
+    }
+
+    /// [`at`](Self::at) and its derivative with respect to `s`.
+    #[inline]
+    #[must_use]
+    pub fn at_with_slope<R: Real, const D: usize>(self, s: R) -> (R, R) {
+        match self {
+            Covariance::LowPass => LOW_PASS.at_with_slope(s),
+            Covariance::BandPass => match D {
+                1 => BAND_PASS_1.at_with_slope(s),
+                2 => BAND_PASS_2.at_with_slope(s),
+                3 => BAND_PASS_3.at_with_slope(s),
+                _ => BAND_PASS_4.at_with_slope(s),
+            },
+        }
+    }
+
+    /// `h(√s)` and its derivative in `s`, in `f64`, from the formula, in `d` dimensions (1 to
+    /// 4): what the tables hold and what tests compare with.
+    #[must_use]
+    pub const fn exact(self, d: usize, s: f64) -> (f64, f64) {
+        profile(self, d).exact(s)
+    }
+
+    /// `∫ h(|x|)² dx` over `d`-dimensional space (`d` in 1..=4), by Simpson's rule: the
+    /// realised variance per unit `σ_η²`, averaged over a cell (see the module docs).
+    #[must_use]
+    pub const fn power(self, d: usize) -> f64 {
+        profile(self, d).integral(d, 2)
+    }
+
+    /// `∫ h(|x|) dx` over `d`-dimensional space: the requested spectrum at `f = 0`
+    /// (0 for [`BandPass`](Self::BandPass), up to the quadrature's rounding).
+    #[must_use]
+    pub const fn integral(self, d: usize) -> f64 {
+        profile(self, d).integral(d, 1)
+    }
+}
+
+/// The radial profile of `covariance` in `d` dimensions.
+const fn profile(covariance: Covariance, d: usize) -> Profile {
+    match covariance {
+        Covariance::LowPass => Profile::Wendland,
+        Covariance::BandPass => {
+            Profile::BandPass(if d < 1 { 1 } else if d > 4 { 4 } else { d })
+        }
+    }
+}
+
+/// Whether the covariance matrix of the `4^D` lattice points around a cell, `C_kj = h(t_j −
+/// t_k)`, is the identity: Lewis's lattice condition for this neighbourhood, so `C⁻¹ = I`.
+const fn neighbourhood_is_identity(covariance: Covariance, d: usize) -> bool {
+    let points = 1usize << (2 * d);
+    let mut j = 0;
+    while j < points {
+        let mut k = 0;
+        while k < points {
+            // Squared distance between points j and k: base-4 digits are the offsets.
+            let (mut s, mut a) = (0i64, 0);
+            while a < d {
+                let o = ((j >> (2 * a)) & 3) as i64 - ((k >> (2 * a)) & 3) as i64;
+                s += o * o;
+                a += 1;
+            }
+            let want = if j == k { 1.0 } else { 0.0 };
+            if covariance.exact(d, s as f64).0 != want {
+                return false;
+            }
+            k += 1;
+        }
+        j += 1;
+    }
+    true
+}
+
+const _: () = {
+    let mut d = 1;
+    while d <= 4 {
+        assert!(neighbourhood_is_identity(Covariance::LowPass, d));
+        assert!(neighbourhood_is_identity(Covariance::BandPass, d));
+        d += 1;
+    }
+};
+
+/// The low-pass covariance's table (its `s√s` term needs fine knots near 0).
+static LOW_PASS: Table<257> = Table::new(Profile::Wendland);
+/// The band-pass covariance's tables, one per dimension: `Δs = 1/32`.
+static BAND_PASS_1: Table<129> = Table::new(Profile::BandPass(1));
+static BAND_PASS_2: Table<129> = Table::new(Profile::BandPass(2));
+static BAND_PASS_3: Table<129> = Table::new(Profile::BandPass(3));
+static BAND_PASS_4: Table<129> = Table::new(Profile::BandPass(4));
+
+/// `σ_η²`: the variance of a lattice value, `4 (256² − 1)/12 / 512²`.
+pub const VALUE_VARIANCE: f64 = 4.0 * 65_535.0 / 12.0 / 262_144.0;
+
+/// A lattice point's value from its hash: its four bytes summed, centred, over 512.
+#[inline]
+fn value<R: Real>(key: u32) -> R {
+    let [a, b, c, d] = key.to_le_bytes();
+    let sum = i32::from(a) + i32::from(b) + i32::from(c) + i32::from(d);
+    R::from_ratio(sum - 510, 9)
+}
+
+/// Wiener-interpolated noise in `D` dimensions (1 to 4): Lewis's §3 (see the module docs).
+///
+/// The lattice is the integer grid: sample at `x · f` for features `1/f` units wide. The
+/// default covariance is [`Covariance::LowPass`].
+///
+/// # Amplitude
+///
+/// Variance 1 averaged over a cell and mean 0 (closed form, see the module docs; tested over
+/// 10⁶ samples). The lattice values are below 1 in magnitude and `|h| ≤ 1` at the at most
+/// `(2r)^D` points within the support's radius `r`, so `|η̂| ≤ (2r)^D / σ`
+/// ([`amplitude_bound`](Noise::amplitude_bound)).
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{I16F16, Noise, wiener::{Covariance, WienerNoise}};
+///
+/// let smooth = WienerNoise::<2>::new(7);
+/// let v: f32 = smooth.sample([0.5, 1.25]);
+/// assert!(v.abs() <= smooth.amplitude_bound());
+///
+/// // Band-pass, in fixed point.
+/// let bands = WienerNoise::<3>::new(7).with_covariance(Covariance::BandPass);
+/// let p = [0.5f32, 1.25, -2.0];
+/// let q: I16F16 = bands.sample(p.map(I16F16::from_num));
+/// assert!((q.to_num::<f32>() - bands.sample(p)).abs() < 2e-3);
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct WienerNoise<const D: usize> {
+    hash: CellHash,
+    covariance: Covariance,
+    /// `1/σ`, in floats and in fixed point.
+    scale: f32,
+    scale_fixed: I16F16,
+}
+
+impl<const D: usize> WienerNoise<D> {
+    /// The noise for `seed`, with the low-pass covariance.
+    #[must_use]
+    pub fn new(seed: u32) -> Self {
+        const { assert!(D >= 1 && D <= 4, "Wiener noise has 1 to 4 dimensions") };
+        Self::build(CellHash::new(seed), Covariance::default())
+    }
+
+    fn build(hash: CellHash, covariance: Covariance) -> Self {
+        let scale = (1.0 / Self::sigma_of(covariance)) as f32;
+        Self {
+            hash,
+            covariance,
+            scale,
+            scale_fixed: I16F16::from_f32(scale),
+        }
+    }
+
+    /// The same noise (the same lattice values) with another covariance.
+    #[must_use]
+    pub fn with_covariance(self, covariance: Covariance) -> Self {
+        Self::build(self.hash, covariance)
+    }
+
+    /// The covariance.
+    #[must_use]
+    pub fn covariance(&self) -> Covariance {
+        self.covariance
+    }
+
+    /// The standard deviation of the unscaled sum averaged over a cell, `√(σ_η² ∫h²)`,
+    /// which the noise divides by.
+    #[must_use]
+    pub fn sigma(&self) -> f64 {
+        Self::sigma_of(self.covariance)
+    }
+
+    fn sigma_of(covariance: Covariance) -> f64 {
+        libm::sqrt(VALUE_VARIANCE * covariance.power(D))
+    }
+
+    /// The bound on `|sample(p)|` in every number type (see [Amplitude](Self#amplitude)).
+    #[must_use]
+    pub fn amplitude_bound(&self) -> f32 {
+        let points = (2 * self.covariance.radius()).pow(D as u32) as f64;
+        // A little above: the roundings of the sum and of the fixed-point scale.
+        (points * self.scale as f64 * (1.0 + 1e-4)) as f32
+    }
+
+    /// Calls `visit(δ, s, η)` for each lattice point within the covariance's support of `p`:
+    /// the offset from the point to `p`, its square length and the point's value.
+    #[inline]
+    fn walk<R: Real>(&self, p: [R; D], visit: impl FnMut([R; D], R, R)) {
+        match self.covariance {
+            Covariance::LowPass => walk::<R, D, 2>(&self.hash, p, visit),
+            Covariance::BandPass => walk::<R, D, 4>(&self.hash, p, visit),
+        }
+    }
+}
+
+/// [`WienerNoise::walk`] over the `N^D` points around `p`'s cell (`N` = 2: offsets 0, 1; 4:
+/// −1 to 2), those at squared distance `(N/2)²` or more skipped.
+#[inline]
+fn walk<R: Real, const D: usize, const N: usize>(
+    hash: &CellHash,
+    p: [R; D],
+    mut visit: impl FnMut([R; D], R, R),
+) {
+    let low = 1 - (N / 2) as i32;
+    let mut cells = [[0u32; N]; D];
+    let mut deltas = [[R::ZERO; N]; D];
+    let mut gaps = [[R::ZERO; N]; D];
+    for a in 0..D {
+        let (c, f) = p[a].split();
+        for k in 0..N {
+            let o = low + k as i32;
+            let d = f - R::from_i32(o);
+            cells[a][k] = c.wrapping_add(o) as u32;
+            deltas[a][k] = d;
+            gaps[a][k] = d.mul_rn(d);
+        }
+    }
+    let reach = R::from_i32(((N / 2) * (N / 2)) as i32);
+    hash.near(&cells, &gaps, reach, |digit, key, s| {
+        let delta = core::array::from_fn(|a| deltas[a][digit[a].min(N - 1)]);
+        visit(delta, s, value(key));
+    });
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        let covariance = self.covariance;
+        let mut total = R::ZERO;
+        self.walk(p, |_, s, eta| {
+            total = total + eta.mul_rn(covariance.at::<R, D>(s));
+        });
+        total
+            .mul_rn(R::from_setting(self.scale, self.scale_fixed))
+            .canonical()
+    }
+
+    fn amplitude_bound(&self) -> f32 {
+        WienerNoise::amplitude_bound(self)
+    }
+
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        for (l, o) in out.iter_mut().enumerate() {
+            *o = self.sample(crate::batch::lane(p, l));
+        }
+    }
+}
+
+/// The analytic gradient: `∇η̂ = Σ_j η_j · 2(x − t_j) · dh/ds`, from the covariance's table
+/// ([`Covariance::at_with_slope`]); the value is [`sample`](Noise::sample)'s bit for bit.
+impl<R: Real, const D: usize> NoiseGradient<R, D> for WienerNoise<D> {
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        let covariance = self.covariance;
+        let mut total = R::ZERO;
+        let mut gradient = [R::ZERO; D];
+        self.walk(p, |delta, s, eta| {
+            let (h, slope) = covariance.at_with_slope::<R, D>(s);
+            total = total + eta.mul_rn(h);
+            let es = eta.mul_rn(slope);
+            for (g, d) in gradient.iter_mut().zip(delta) {
+                *g = g.saturating_add((es + es).mul_rn(d));
+            }
+        });
+        let scale = R::from_setting(self.scale, self.scale_fixed);
+        (
+            total.mul_rn(scale).canonical(),
+            gradient.map(|g| g.saturating_mul(scale).canonical()),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The tables' errors the [`Covariance`] docs state, in every dimension.
+    #[test]
+    fn tables_follow_the_covariances() {
+        for (covariance, d, inner, outer) in [
+            (Covariance::LowPass, 2, 2.5e-4, 3e-6),
+            (Covariance::BandPass, 1, 6e-6, 6e-6),
+            (Covariance::BandPass, 2, 6e-6, 6e-6),
+            (Covariance::BandPass, 3, 6e-6, 6e-6),
+            (Covariance::BandPass, 4, 6e-6, 6e-6),
+        ] {
+            let at = |s: f64| match d {
+                1 => covariance.at::<f64, 1>(s),
+                2 => covariance.at::<f64, 2>(s),
+                3 => covariance.at::<f64, 3>(s),
+                _ => covariance.at::<f64, 4>(s),
+            };
+            let rim = f64::from(covariance.radius() * covariance.radius());
+            let (mut wi, mut wo) = (0.0f64, 0.0f64);
+            for i in 0..=100_000 {
+                let s = rim * i as f64 / 100_000.0;
+                let e = (at(s) - covariance.exact(d, s).0).abs();
+                if s < 1.0 / 256.0 {
+                    wi = wi.max(e);
+                } else {
+                    wo = wo.max(e);
+                }
+            }
+            assert!(wi < inner && wo < outer, "{covariance:?} {d}: {wi} {wo}");
+        }
+    }
+
+    /// The band-pass covariance integrates to 0 in its dimension (its `a₁`), and the slopes
+    /// in the table are the formula's derivative.
+    #[test]
+    fn band_pass_has_no_mean() {
+        for d in 1..=4 {
+            let i = Covariance::BandPass.integral(d);
+            assert!(i.abs() < 1e-9, "{d}: {i}");
+            assert!(Covariance::LowPass.integral(d) > 0.1);
+            for k in 1..400 {
+                let s = k as f64 / 100.0;
+                let e = 1e-6;
+                let (_, slope) = Covariance::BandPass.exact(d, s);
+                let numeric = (Covariance::BandPass.exact(d, s + e).0
+                    - Covariance::BandPass.exact(d, s - e).0)
+                    / (2.0 * e);
+                assert!((slope - numeric).abs() < 1e-6, "{d} {s}");
+            }
+        }
+    }
+
+    /// The values are those of the lattice points at the lattice points (the interpolation is
+    /// exact there), scaled.
+    #[test]
+    fn interpolates_the_lattice_values() {
+        for covariance in [Covariance::LowPass, Covariance::BandPass] {
+            let noise = WienerNoise::<2>::new(3).with_covariance(covariance);
+            for (x, y) in [(0, 0), (5, -7), (-100, 33)] {
+                let key = noise.hash.hash([x, y]);
+                let want = value::<f64>(key) * noise.scale as f64;
+                let got: f64 = noise.sample([x as f64, y as f64]);
+                assert!((got - want).abs() < 1e-12, "{covariance:?} {x} {y}");
+            }
+        }
+    }
+
+    #[test]
+    fn values_are_centred() {
+        assert_eq!(value::<f32>(0), -510.0 / 512.0);
+        assert_eq!(value::<f32>(u32::MAX), 510.0 / 512.0);
+        assert_eq!(value::<f32>(0x8080_7F7F), 0.0);
+    }
+}
