@@ -2,6 +2,8 @@
 //! can be replayed from the environment, an enum over every lattice noise so a test can loop over
 //! all of them, and small statistics.
 
+pub mod spectral;
+
 use bandnoise::Error;
 use bandnoise::batch::{Grid, LANES};
 use bandnoise::prelude::*;

@@ -11,7 +11,9 @@
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
 use bandnoise::{I16F16, Noise};
 use bandnoise_tests::Rng;
-use rustfft::{FftPlanner, num_complex::Complex};
+use bandnoise_tests::spectral::{
+    self, ks_to_normal, mean_variance, radial_transform, spectral_density,
+};
 
 const KERNELS: [Kernel; 2] = [Kernel::Cosine, Kernel::CatmullRom];
 
@@ -24,27 +26,6 @@ where
     (0..n)
         .map(|_| noise.sample(core::array::from_fn(|_| rng.f64_in(-4096.0, 4096.0) as f32)) as f64)
         .collect()
-}
-
-fn mean_variance(v: &[f64]) -> (f64, f64) {
-    let mean = v.iter().sum::<f64>() / v.len() as f64;
-    let var = v.iter().map(|x| (x - mean) * (x - mean)).sum::<f64>() / v.len() as f64;
-    (mean, var)
-}
-
-/// The Kolmogorov–Smirnov distance between the samples and N(0, 1).
-fn ks_to_normal(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len() as f64;
-    v.iter()
-        .enumerate()
-        .map(|(i, &x)| {
-            let cdf = 0.5 * (1.0 + libm::erf(x / std::f64::consts::SQRT_2));
-            (cdf - i as f64 / n)
-                .abs()
-                .max((cdf - (i + 1) as f64 / n).abs())
-        })
-        .fold(0.0, f64::max)
 }
 
 fn variance_case<const D: usize>(noise: SparseConvolution<D>, label: &str, rng: &mut Rng)
@@ -131,135 +112,18 @@ fn amplitudes_become_gaussian_with_density() {
     }
 }
 
-/// The kernel's Fourier transform at `q` cycles per unit: the Hankel transform
-/// `2π ∫ h(r) J₀(2πqr) r dr` in 2D, `4π ∫ h(r) sinc(2πqr) r² dr` in 3D.
-fn kernel_transform(kernel: Kernel, d: usize, q: f64) -> f64 {
-    let n = 4000;
-    let tau = 2.0 * std::f64::consts::PI;
-    (0..n)
-        .map(|i| {
-            let r = (i as f64 + 0.5) / n as f64;
-            let h = kernel.exact(r * r).0;
-            let x = tau * q * r;
-            if d == 2 {
-                tau * h * libm::j0(x) * r
-            } else {
-                let sinc = if x == 0.0 { 1.0 } else { x.sin() / x };
-                2.0 * tau * h * sinc * r * r
-            }
-        })
-        .sum::<f64>()
-        / n as f64
-}
-
-/// A `side^D` grid's periodogram under a separable Hann window, as the spectral density of
-/// the field (variance = ∫ S): `S(f) ≈ |F|² Δ^D / Σ w²`.
-fn spectral_density(grid: &[f64], side: usize, d: usize, spacing: f64) -> Vec<f64> {
-    let mean = grid.iter().sum::<f64>() / grid.len() as f64;
-    let window: Vec<f64> = (0..side)
-        .map(|i| {
-            let t = std::f64::consts::PI * (i as f64 + 0.5) / side as f64;
-            t.sin() * t.sin()
-        })
-        .collect();
-    let weight = |i: usize| {
-        (0..d)
-            .map(|a| window[(i / side.pow(a as u32)) % side])
-            .product::<f64>()
-    };
-    let mut data: Vec<Complex<f64>> = grid
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| Complex::new((v - mean) * weight(i), 0.0))
-        .collect();
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(side);
-    let mut line = vec![Complex::new(0.0, 0.0); side];
-    for a in 0..d {
-        let stride = side.pow(a as u32);
-        for start in 0..grid.len() {
-            // Each line along axis a once: its first element has coordinate 0 along a.
-            if !(start / stride).is_multiple_of(side) {
-                continue;
-            }
-            for (k, l) in line.iter_mut().enumerate() {
-                *l = data[start + k * stride];
-            }
-            fft.process(&mut line);
-            for (k, l) in line.iter().enumerate() {
-                data[start + k * stride] = *l;
-            }
-        }
-    }
-    let sum_w2: f64 = (0..grid.len()).map(|i| weight(i).powi(2)).sum();
-    data.iter()
-        .map(|c| c.norm_sqr() * spacing.powi(d as i32) / sum_w2)
-        .collect()
-}
-
-/// The radially averaged spectral density in rings `ring` cycles per unit wide, against the
-/// kernel's `|H(f)|²/∫h²` (the spectrum of the normalised noise, by Parseval variance 1).
-/// Returns the largest difference in dB over the rings where the analytic density is above
-/// 1% of its peak, and prints both.
-fn compare_spectrum(
-    kernel: Kernel,
-    d: usize,
-    density: &[f64],
-    side: usize,
-    spacing: f64,
-    ring: f64,
-) -> f64 {
-    let bin = 1.0 / (side as f64 * spacing);
-    let rings = (0.5 / spacing / ring) as usize;
-    // |H(f)|²/∫h² on a fine table of frequencies, read at each bin's frequency, so each ring
-    // compares the same bins' averages.
-    let power = Kernel::power(kernel, d);
-    let step = 0.002;
-    let analytic: Vec<f64> = (0..=(rings as f64 * ring / step) as usize + 1)
-        .map(|i| kernel_transform(kernel, d, i as f64 * step).powi(2) / power)
-        .collect();
-    let peak = analytic.iter().copied().fold(0.0, f64::max);
-    let (mut got, mut want, mut count) = (vec![0.0; rings], vec![0.0; rings], vec![0usize; rings]);
-    for (i, &s) in density.iter().enumerate() {
-        let mut f2 = 0.0;
-        for a in 0..d {
-            let k = (i / side.pow(a as u32)) % side;
-            let k = if k > side / 2 {
-                k as f64 - side as f64
-            } else {
-                k as f64
-            };
-            f2 += (k * bin).powi(2);
-        }
-        let f = f2.sqrt();
-        // The lowest bins hold what the mean's removal and the window leave of the mean.
-        if f < 2.5 * bin {
-            continue;
-        }
-        let r = (f / ring) as usize;
-        if r < rings {
-            let t = f / step;
-            let j = t as usize;
-            let a = analytic[j] + (analytic[j + 1] - analytic[j]) * (t - j as f64);
-            got[r] += s;
-            want[r] += a;
-            count[r] += 1;
-        }
-    }
-    let mut worst = 0.0f64;
-    for r in 0..rings {
-        if count[r] == 0 || want[r] / (count[r] as f64) < 0.01 * peak {
-            continue;
-        }
-        let (g, w) = (got[r] / count[r] as f64, want[r] / count[r] as f64);
-        let db = 10.0 * (g / w).log10();
-        println!(
-            "{d}D {kernel:?} f {:.3}: measured {g:.5}, |H|²/∫h² {w:.5} ({db:+.2} dB, {} bins)",
-            (r as f64 + 0.5) * ring,
-            count[r]
-        );
-        worst = worst.max(db.abs());
-    }
-    worst
+/// The spectrum of the normalised noise: the kernel's `|H(f)|²/∫h²` (by Parseval, variance
+/// 1), compared ring by ring within 1 dB wherever it is above 1% of its peak.
+fn compare_spectrum(kernel: Kernel, d: usize, density: &[f64], side: usize, spacing: f64) -> f64 {
+    let power = kernel.power(d);
+    spectral::compare_spectrum(
+        &format!("{d}D {kernel:?}"),
+        d,
+        density,
+        (side, spacing, 0.05),
+        |q| radial_transform(d, 1.0, |r| kernel.exact(r * r).0, q).powi(2) / power,
+        None,
+    )
 }
 
 /// The radially averaged power spectrum follows the kernel's: within 1 dB wherever the
@@ -293,7 +157,7 @@ fn spectrum_is_the_kernels() {
                 *m += s / seeds as f64;
             }
         }
-        let worst = compare_spectrum(kernel, 2, &mean_density, side, spacing, 0.05);
+        let worst = compare_spectrum(kernel, 2, &mean_density, side, spacing);
         assert!(worst <= 1.0, "2D {kernel:?}: {worst} dB");
 
         // 3D.
@@ -319,7 +183,7 @@ fn spectrum_is_the_kernels() {
                 *m += s / seeds as f64;
             }
         }
-        let worst = compare_spectrum(kernel, 3, &mean_density, side, spacing, 0.05);
+        let worst = compare_spectrum(kernel, 3, &mean_density, side, spacing);
         assert!(worst <= 1.0, "3D {kernel:?}: {worst} dB");
     }
 }
