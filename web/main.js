@@ -42,7 +42,7 @@ function params() {
     state.pan[0], state.pan[1], number('time'), period, $('fractal').value,
     number('octaves'), number('lacunarity'), number('gain'),
     new Float32Array(state.bandWeights), $('distribution').value, $('tiling').value,
-    number('density'), $('kernel').value, $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
+    number('density'), $('kernel').value, $('covariance').value, $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
   );
 }
 

@@ -17,6 +17,7 @@ use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::lattice::TabledPerlin;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
+use bandnoise::wiener::Covariance;
 use bandnoise::{
     FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,
 };
@@ -143,7 +144,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 7;
+const COMPOSED: usize = 9;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -153,6 +154,11 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             .with_period(period)
             .unwrap_or(Spec::new(base, seed))
     };
+    let band_pass = Spec::new(Base::Wiener, 2);
+    // Accepted for Wiener noise.
+    let band_pass = band_pass
+        .with_covariance(Covariance::BandPass)
+        .unwrap_or(band_pass);
     let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
@@ -187,6 +193,8 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             2,
             2000,
         ),
+        ("band-pass wiener 2D", band_pass, 2, 200),
+        ("band-pass wiener 3D", band_pass, 3, 200),
     ]
 }
 

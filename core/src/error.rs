@@ -100,6 +100,8 @@ pub enum Error {
     /// An impulse setting (density, count, kernel, weights) asked for a noise that is not
     /// made of impulses.
     NotImpulse(&'static str),
+    /// A covariance asked for a noise that is not Wiener-interpolated.
+    NotWiener(&'static str),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -187,6 +189,10 @@ impl fmt::Display for Error {
             Error::NotImpulse(noise) => write!(
                 f,
                 "{noise} noise has no impulses (density, count, kernel and weights are for sparse noise)"
+            ),
+            Error::NotWiener(noise) => write!(
+                f,
+                "{noise} noise has no covariance (covariance is for Wiener noise)"
             ),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")

@@ -20,6 +20,7 @@
 //! multiband seed=5 first=-1 bands=0.5,1,0.5 distribution=uniform
 //! mnoise seed=1 ridged octaves=4 lacunarity=1.99 gain=0.5
 //! sparse seed=2 kernel=catmull-rom density=3
+//! wiener seed=4 covariance=band-pass
 //! ```
 //!
 //! | setting | value | default |
@@ -34,6 +35,7 @@
 //! | `count=` | impulses in every cell, `1..=32` (sparse noise, instead of a density) | Poisson counts |
 //! | `kernel=` | `cosine` or `catmull-rom` (sparse noise, [`Kernel`]) | `cosine` |
 //! | `weights=` | `sign` or `uniform` (sparse noise, [`Weights`]) | `sign` |
+//! | `covariance=` | `low-pass` or `band-pass` (Wiener noise, [`Covariance`]) | `low-pass` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
 //!
@@ -89,6 +91,7 @@ use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
     TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
 };
+use crate::wiener::{Covariance, WienerNoise};
 use crate::{Error, Noise, NoiseGradient, Real};
 
 /// The noise a [`Spec`] starts from.
@@ -117,11 +120,13 @@ pub enum Base {
     Multiband,
     /// [`SparseConvolution`]: Lewis's sparse convolution noise, 1D–4D. Text: `sparse`.
     Sparse,
+    /// [`WienerNoise`]: Lewis's Wiener-interpolated noise, 1D–4D. Text: `wiener`.
+    Wiener,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 9] = [
+    pub const ALL: [Base; 10] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -131,6 +136,7 @@ impl Base {
         Base::Wavelet,
         Base::Multiband,
         Base::Sparse,
+        Base::Wiener,
     ];
 
     /// The name in the text form.
@@ -146,6 +152,7 @@ impl Base {
             Base::Wavelet => "wavelet",
             Base::Multiband => "multiband",
             Base::Sparse => "sparse",
+            Base::Wiener => "wiener",
         }
     }
 
@@ -158,10 +165,11 @@ impl Base {
         }
     }
 
-    /// Whether the noise can be wrapped by [`Periodic`] (the lattice noises).
+    /// Whether the noise can be wrapped by [`Periodic`] (the lattice noises that interpolate
+    /// a cell's corners).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !self.is_wavelet() && !self.is_impulse()
+        !self.is_wavelet() && !self.is_impulse() && !matches!(self, Base::Wiener)
     }
 
     /// Whether the noise is made of random impulses (and has impulse settings).
@@ -202,6 +210,8 @@ pub struct Spec {
     weights: Weights,
     density: f32,
     per_cell: u8,
+    /// Wiener noise's covariance; the default for every other base.
+    covariance: Covariance,
     fractal: Option<(Kind, Octaves)>,
 }
 
@@ -221,6 +231,7 @@ impl Spec {
             weights: Weights::Sign,
             density: impulse::DEFAULT_DENSITY,
             per_cell: 0,
+            covariance: Covariance::LowPass,
             fractal: None,
         }
     }
@@ -379,6 +390,19 @@ impl Spec {
         }
     }
 
+    /// Wiener noise with `covariance`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotWiener`] unless the base is [`Base::Wiener`].
+    pub fn with_covariance(mut self, covariance: Covariance) -> Result<Self, Error> {
+        if self.base != Base::Wiener {
+            return Err(Error::NotWiener(self.base.name()));
+        }
+        self.covariance = covariance;
+        Ok(self)
+    }
+
     /// The same noise summed by a [`Fractal`] of `kind` with `octaves`.
     #[must_use]
     pub const fn with_fractal(mut self, kind: Kind, octaves: Octaves) -> Self {
@@ -445,6 +469,12 @@ impl Spec {
         } else {
             Ok(self.density)
         }
+    }
+
+    /// Wiener noise's covariance (the default for other bases).
+    #[must_use]
+    pub const fn covariance(&self) -> Covariance {
+        self.covariance
     }
 
     /// The fractal sum, if any.
@@ -518,6 +548,12 @@ impl Spec {
                 3 => Any::Sparse3(self.sparse::<3>()?),
                 _ => Any::Sparse4(self.sparse::<4>()?),
             },
+            Base::Wiener => match D {
+                1 => Any::Wiener1(WienerNoise::new(s).with_covariance(self.covariance)),
+                2 => Any::Wiener2(WienerNoise::new(s).with_covariance(self.covariance)),
+                3 => Any::Wiener3(WienerNoise::new(s).with_covariance(self.covariance)),
+                _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
+            },
         };
         Ok(SpecNoise {
             spec: *self,
@@ -575,6 +611,12 @@ impl fmt::Display for Spec {
                 }
                 Err(n) => write!(f, " count={n}")?,
             }
+        }
+        if self.base == Base::Wiener {
+            f.write_str(match self.covariance {
+                Covariance::LowPass => " covariance=low-pass",
+                Covariance::BandPass => " covariance=band-pass",
+            })?;
         }
         if self.base.is_wavelet() {
             f.write_str(match self.tiling {
@@ -672,10 +714,10 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
-     wavelet, multiband, sparse)";
+     wavelet, multiband, sparse, wiener)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
-     distribution=, density=, count=, kernel=, weights=, fbm, turbulence, ridged, octaves=, \
-     lacunarity=, gain=)";
+     distribution=, density=, count=, kernel=, weights=, covariance=, fbm, turbulence, ridged, \
+     octaves=, lacunarity=, gain=)";
 
 impl FromStr for Spec {
     type Err = ParseError;
@@ -714,6 +756,7 @@ impl FromStr for Spec {
                 "count" => &mut seen.impulses,
                 "kernel" => &mut seen.kernel,
                 "weights" => &mut seen.weights,
+                "covariance" => &mut seen.covariance,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -736,6 +779,13 @@ impl FromStr for Spec {
                     position: at,
                     expected: "impulse settings only for sparse noise",
                     refused: Some(Error::NotImpulse(base.name())),
+                });
+            }
+            if key == "covariance" && base != Base::Wiener {
+                return Err(ParseError {
+                    position: at,
+                    expected: "a covariance only for Wiener noise",
+                    refused: Some(Error::NotWiener(base.name())),
                 });
             }
             if matches!(key, "density" | "count") && seen.density && seen.impulses {
@@ -777,6 +827,17 @@ impl FromStr for Spec {
                         _ => return Err(err(value_at, E)),
                     };
                     spec = spec.with_weights(weights).map_err(|e| refused(at, E, e))?;
+                }
+                "covariance" => {
+                    const E: &str = "a covariance (low-pass, band-pass)";
+                    let covariance = match needs_value(E)? {
+                        "low-pass" => Covariance::LowPass,
+                        "band-pass" => Covariance::BandPass,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec
+                        .with_covariance(covariance)
+                        .map_err(|e| refused(at, E, e))?;
                 }
                 "seed" => {
                     const E: &str = "a seed in 0..=4294967295";
@@ -956,6 +1017,7 @@ struct Seen {
     impulses: bool,
     kernel: bool,
     weights: bool,
+    covariance: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -1100,6 +1162,10 @@ enum Any<S: Tiles> {
     Sparse2(SparseConvolution<2>),
     Sparse3(SparseConvolution<3>),
     Sparse4(SparseConvolution<4>),
+    Wiener1(WienerNoise<1>),
+    Wiener2(WienerNoise<2>),
+    Wiener3(WienerNoise<3>),
+    Wiener4(WienerNoise<4>),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1222,7 +1288,7 @@ impl<R: Real, const D: usize> Op<R, D> for Gradient<R, D> {
 /// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` and `$multiband` name the
 /// variants sampled in this dimension, if any.
 macro_rules! spec_noise {
-    ($d:literal, $sparse:ident $(, $wavelet:ident, $multiband:ident)?) => {
+    ($d:literal, $sparse:ident, $wiener:ident $(, $wavelet:ident, $multiband:ident)?) => {
         impl<S: Tiles> Layers<$d, S> {
             /// Runs `op` on the (possibly periodic) base noise.
             fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
@@ -1235,11 +1301,13 @@ macro_rules! spec_noise {
                     Any::M61(n) => with_period(n, period, op),
                     Any::M4093(n) => with_period(n, period, op),
                     Any::$sparse(n) => op.run(n),
+                    Any::$wiener(n) => op.run(n),
                     $(Any::$wavelet(n) => op.run(n),
                     Any::$multiband(n) => op.run(n),)?
                     #[allow(unreachable_patterns, reason = "the other dimensions")]
                     Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_)
-                    | Any::Sparse1(_) | Any::Sparse2(_) | Any::Sparse3(_) | Any::Sparse4(_) => {
+                    | Any::Sparse1(_) | Any::Sparse2(_) | Any::Sparse3(_) | Any::Sparse4(_)
+                    | Any::Wiener1(_) | Any::Wiener2(_) | Any::Wiener3(_) | Any::Wiener4(_) => {
                         op.run(&Zero)
                     }
                 }
@@ -1291,7 +1359,7 @@ macro_rules! spec_noise_entry_points {
     };
 }
 
-spec_noise!(1, Sparse1);
-spec_noise!(2, Sparse2, Wavelet2, Multiband2);
-spec_noise!(3, Sparse3, Wavelet3, Multiband3);
-spec_noise!(4, Sparse4);
+spec_noise!(1, Sparse1, Wiener1);
+spec_noise!(2, Sparse2, Wiener2, Wavelet2, Multiband2);
+spec_noise!(3, Sparse3, Wiener3, Wavelet3, Multiband3);
+spec_noise!(4, Sparse4, Wiener4);

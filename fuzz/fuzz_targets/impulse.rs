@@ -1,6 +1,7 @@
 //! Every impulse noise of the runtime description (`bandnoise::spec::Base`, so one added there
-//! is fuzzed unasked), with arbitrary settings (density as any f32 bit pattern, counts, kernels,
-//! weights) and arbitrary bit patterns as coordinates and seeds, 1D–4D, in f32 and I16F16:
+//! is fuzzed unasked) and Wiener noise, with arbitrary settings (density as any f32 bit
+//! pattern, counts, kernels, weights; Wiener noise's covariance) and arbitrary bit patterns as
+//! coordinates and seeds, 1D–4D, in f32 and I16F16:
 //! settings are refused for a documented reason or build; samples never panic, are never NaN
 //! or -0.0, lie within the documented bound; the gradient's value is the sample's; the batch
 //! path equals `sample` bit for bit; fixed point follows f32 where the input is exact in both.
@@ -10,17 +11,19 @@ use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
 use bandnoise::impulse::{Kernel, MAX_FIXED, MIN_DENSITY, Weights};
 use bandnoise::spec::{Base, Spec};
+use bandnoise::wiener::Covariance;
 use bandnoise::{Error, I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
 struct Input {
-    /// An index into the impulse noises of `Base::ALL`.
+    /// An index into the impulse noises of `Base::ALL` and Wiener noise.
     base: u8,
     seed: u32,
     /// The density's bits, or (if `fixed`) the count per cell.
     density: u32,
     fixed: bool,
+    /// Peachey's kernel, or Wiener noise's band-pass covariance.
     catmull_rom: bool,
     uniform: bool,
     bits: [u32; 4],
@@ -70,9 +73,10 @@ where
         );
     }
     if exact {
-        // Each impulse in reach (at most 3^D·cap of them) is off by at most 1e-4 (the
-        // kernel's I16F16 error) plus its squared distance's rounding times the kernel's
-        // slope (2⁻¹⁵·10), scaled by 1/σ: in all at most that times amplitude_bound.
+        // Each impulse in reach (at most 3^D·cap of them; Wiener noise: lattice points, at
+        // most (2r)^D) is off by at most 1e-4 (the table's I16F16 error) plus its squared
+        // distance's rounding times the table's slope (2⁻¹⁵·10), scaled by 1/σ: in all at
+        // most that times amplitude_bound.
         let qf: [f32; D] = core::array::from_fn(|a| fixed[a].to_num::<f32>());
         let vf: f32 = noise.sample(qf);
         let tolerance = (1e-4 + 10.0 / 32768.0) * bound + 1.0 / 4096.0;
@@ -83,12 +87,9 @@ where
     }
 }
 
-fuzz_target!(|input: Input| {
-    let impulse: Vec<Base> = Base::ALL.into_iter().filter(|b| b.is_impulse()).collect();
-    let Some(&base) = impulse.get(usize::from(input.base) % impulse.len().max(1)) else {
-        return;
-    };
-    let mut spec = Spec::new(base, input.seed);
+/// The impulse settings of `input` on `spec`: `None` where they are refused (for the
+/// documented reason).
+fn impulse_settings(mut spec: Spec, input: &Input) -> Option<Spec> {
     if input.catmull_rom {
         spec = spec
             .with_kernel(Kernel::CatmullRom)
@@ -104,20 +105,44 @@ fuzz_target!(|input: Input| {
     } else {
         spec.with_density(f32::from_bits(input.density))
     };
-    spec = match set {
-        Ok(s) => s,
+    match set {
+        Ok(s) => Some(s),
         Err(Error::ImpulseCount { count, max }) => {
             assert!(count == 0 || count > max, "{count} refused");
             assert_eq!(max, MAX_FIXED);
-            return;
+            None
         }
         Err(Error::Density { density, min, max }) => {
             assert!(!(min..=max).contains(&density), "{density} refused");
             assert_eq!(min, MIN_DENSITY);
-            return;
+            None
         }
         Err(e) => panic!("{spec}: {e}"),
+    }
+}
+
+fuzz_target!(|input: Input| {
+    let bases: Vec<Base> = Base::ALL
+        .into_iter()
+        .filter(|&b| b.is_impulse() || b == Base::Wiener)
+        .collect();
+    let Some(&base) = bases.get(usize::from(input.base) % bases.len().max(1)) else {
+        return;
     };
+    let mut spec = Spec::new(base, input.seed);
+    if base == Base::Wiener {
+        if input.catmull_rom {
+            spec = spec
+                .with_covariance(Covariance::BandPass)
+                .expect("Wiener noise");
+        }
+        assert_eq!(spec.with_density(1.0), Err(Error::NotImpulse("wiener")));
+    } else {
+        let Some(set) = impulse_settings(spec, &input) else {
+            return;
+        };
+        spec = set;
+    }
     let floats = input.bits.map(f32::from_bits);
     let fixed = input.bits.map(|b| I16F16::from_bits(b as i32));
     let exact = fixed.iter().all(|x| x.to_bits().unsigned_abs() < 256 << 16);

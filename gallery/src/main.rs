@@ -174,7 +174,7 @@ fn run(o: &Options) -> Result<(), String> {
     }
     for base in Base::ALL.into_iter().filter(|b| b.has_dimension(2)) {
         let noise = build(&Spec::new(base, o.seed))?;
-        if base.is_impulse() {
+        if base.is_impulse() || base == Base::Wiener {
             // Variance 1 and a bound far above what occurs: show ±3σ.
             render_scaled::<f32, _>(o, &format!("{base}-2d"), &noise, 3.0)?;
             render_scaled::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise, 3.0)?;
@@ -189,6 +189,7 @@ fn run(o: &Options) -> Result<(), String> {
     }
     render_wavelet_tilings(o)?;
     render_sparse_densities(o)?;
+    render_wiener_covariances(o)?;
     render_wavelet_filtering(o)
 }
 
@@ -206,6 +207,14 @@ fn render_sparse_densities(o: &Options) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+/// Wiener-interpolated noise (Lewis 1989 §3) with the band-pass covariance, ±3σ (the
+/// low-pass default is `wiener-2d`).
+fn render_wiener_covariances(o: &Options) -> Result<(), String> {
+    let text = format!("wiener seed={} covariance=band-pass", o.seed);
+    let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+    render_scaled::<f32, _>(o, "wiener-band-pass-2d", &build(&spec)?, 3.0)
 }
 
 /// One 2D wavelet band over four of its 64² tiles (128 coefficients across the image, whatever

@@ -91,7 +91,7 @@ await test('every noise kind gives a different image', async () => {
   const hashes = new Map();
   // The page lists the noises the wasm module takes from bandnoise's description.
   const kinds = await page.evaluate(() => [...document.getElementById('kind').options].map((o) => o.value));
-  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse']);
+  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener']);
   for (const kind of kinds) {
     await set('kind', kind);
     const s = await canvas('noise');
@@ -117,6 +117,21 @@ await test('each wavelet tiling gives a different image', async () => {
   assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
   await set('tiling', 'blended');
   await set('zoom', '32');
+});
+
+await test('wiener noise: the covariance control changes the image', async () => {
+  await set('kind', 'wiener');
+  const hashes = new Map();
+  for (const covariance of ['low-pass', 'band-pass']) {
+    await set('covariance', covariance);
+    const s = await canvas('noise');
+    assert.ok(s.variance > 200, `${covariance}: variance ${s.variance}`);
+    assert.equal(await message(), '');
+    hashes.set(covariance, s.hash);
+    await page.screenshot({ path: `${artifacts}/demo-wiener-${covariance}.png` });
+  }
+  assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+  await set('covariance', 'low-pass');
 });
 
 await test('sparse noise: density and kernel controls change the image', async () => {

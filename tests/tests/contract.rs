@@ -394,6 +394,21 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_gradient::<R, 3, _>(name, &n3, |p| n3.sample_with_gradient(p), rng);
     }
 
+    // Wiener noise, 1D–4D, both covariances; batches and gradients.
+    for text in ["wiener seed=4", "wiener seed=4 covariance=band-pass"] {
+        let spec: Spec = text.parse().expect("valid");
+        let n1 = spec.build::<1>().expect("1D");
+        let n2 = spec.build::<2>().expect("2D");
+        let n3 = spec.build::<3>().expect("3D");
+        let n4 = spec.build::<4>().expect("4D");
+        sweep_noise::<R, 1, _>(text, &n1, rng);
+        sweep_noise::<R, 2, _>(text, &n2, rng);
+        sweep_noise::<R, 3, _>(text, &n3, rng);
+        sweep_noise::<R, 4, _>(text, &n4, rng);
+        sweep_gradient::<R, 2, _>(text, &n2, |p| n2.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(text, &n3, |p| n3.sample_with_gradient(p), rng);
+    }
+
     // The error function behind the uniform distribution.
     for (s, _) in R::specials() {
         let v = erf(s);

@@ -7,6 +7,7 @@ use bandnoise::prelude::*;
 use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
 use bandnoise::spec::{I16Tiles, Tiles};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling};
+use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise::{Error, batch::Grid};
 use bandnoise_tests::{AllTypes, Rng};
 
@@ -286,6 +287,9 @@ fn random_spec(rng: &mut Rng) -> Spec {
         }
         .expect("in range");
     }
+    if base == Base::Wiener && rng.next_u64().is_multiple_of(2) {
+        spec = spec.with_covariance(Covariance::BandPass).expect("wiener");
+    }
     if rng.next_u64().is_multiple_of(2) {
         let kind = KINDS[rng.next_u64() as usize % 3];
         let octaves = Octaves::new(
@@ -477,6 +481,7 @@ fn every_noise_type_in_core_is_described() {
         ("Wavelet", "wavelet"),
         ("Multiband", "multiband"),
         ("SparseConvolution", "sparse"),
+        ("WienerNoise", "wiener"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -638,6 +643,59 @@ fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
     ));
 }
 
+/// A Wiener spec samples the typed noise it names bit for bit (value and gradient, f32 and
+/// I16F16, 1D–4D, both covariances), and a covariance is refused for other noises.
+#[test]
+fn wiener_specs_sample_their_typed_noise_bit_for_bit() {
+    fn check<const D: usize>(spec: &Spec, typed: &WienerNoise<D>, rng: &mut Rng)
+    where
+        WienerNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+        SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+    {
+        let built = spec.build::<D>().expect("builds");
+        for _ in 0..200 {
+            let q: [I16F16; D] = rng.exact_point(100);
+            let f = bandnoise_tests::to_f32(q);
+            assert_eq!(
+                built.sample(f).to_bits(),
+                typed.sample(f).to_bits(),
+                "{spec}"
+            );
+            assert_eq!(built.sample(q), typed.sample(q), "{spec}");
+            let (a, b) = (built.sample_with_gradient(f), typed.sample_with_gradient(f));
+            assert_eq!(a.0.to_bits(), b.0.to_bits());
+            assert_eq!(a.1.map(f32::to_bits), b.1.map(f32::to_bits));
+        }
+        assert_eq!(
+            Noise::<f32, D>::amplitude_bound(&built),
+            typed.amplitude_bound()
+        );
+    }
+    let mut rng = Rng::from_env(187);
+    let band: Spec = "wiener seed=9 covariance=band-pass".parse().expect("valid");
+    fn typed<const D: usize>(seed: u32) -> WienerNoise<D> {
+        WienerNoise::new(seed).with_covariance(Covariance::BandPass)
+    }
+    check::<1>(&band, &typed(9), &mut rng);
+    check::<2>(&band, &typed(9), &mut rng);
+    check::<3>(&band, &typed(9), &mut rng);
+    check::<4>(&band, &typed(9), &mut rng);
+    let low = Spec::new(Base::Wiener, 2);
+    check::<2>(&low, &WienerNoise::new(2), &mut rng);
+    check::<3>(&low, &WienerNoise::new(2), &mut rng);
+    assert_eq!(low.to_string(), "wiener seed=2 covariance=low-pass");
+    let e = "perlin covariance=band-pass".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::NotWiener("perlin")));
+    assert_eq!(e.position(), 7);
+    let e = "wiener covariance=high-pass".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 18, "{e}");
+    assert!(matches!(
+        low.with_period(&[4]),
+        Err(Error::NotPeriodic("wiener"))
+    ));
+    assert!("wiener density=3".parse::<Spec>().is_err());
+}
+
 /// With the `serde` feature a spec is its text form: a JSON string that round-trips, and a bad
 /// string fails with the parser's message.
 #[test]
@@ -693,12 +751,15 @@ fn consumers_take_their_noises_from_the_description() {
             "{what} ({path}) does not take its noises from bandnoise::spec"
         );
     }
-    // Every base is a lattice noise the helper knows, a wavelet noise or an impulse noise.
+    // Every base is a lattice noise the helper knows, a wavelet, impulse or Wiener noise.
     for base in Base::ALL {
         if base.is_lattice() {
             let _ = bandnoise_tests::Lattice::of(base, 0);
         } else {
-            assert!(base.is_wavelet() || base.is_impulse(), "{base}");
+            assert!(
+                base.is_wavelet() || base.is_impulse() || base == Base::Wiener,
+                "{base}"
+            );
         }
     }
 }

@@ -6,6 +6,7 @@ use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::impulse::Kernel;
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Tiling};
+use bandnoise::wiener::Covariance;
 use wasm_bindgen::prelude::*;
 
 use crate::render::WebTiles;
@@ -134,7 +135,8 @@ impl Params {
     /// not finite, too many, or all zero for multiband noise; a tiling other than varied,
     /// blended or periodic (used by wavelet and multiband noise, ignored by the others); a
     /// density (impulses per kernel volume) outside the core's range or a kernel other than
-    /// cosine or catmull-rom (used by sparse noise, ignored by the others);
+    /// cosine or catmull-rom (used by sparse noise, ignored by the others); a covariance other
+    /// than low-pass or band-pass (used by Wiener noise, ignored by the others);
     /// projection asked for a lattice noise; filtering asked for a lattice noise without a
     /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
     /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
@@ -158,6 +160,7 @@ impl Params {
         tiling: &str,
         density: f64,
         kernel: &str,
+        covariance: &str,
         projected: bool,
         filtered: bool,
         infinite: bool,
@@ -257,6 +260,18 @@ impl Params {
                 .with_kernel(kernel)
                 .and_then(|s| s.with_density(density))
                 .map_err(describe)?;
+        }
+        let covariance = match covariance {
+            "low-pass" => Covariance::LowPass,
+            "band-pass" => Covariance::BandPass,
+            _ => {
+                return Err(format!(
+                    "covariance must be low-pass or band-pass, not \"{covariance}\""
+                ));
+            }
+        };
+        if base == Base::Wiener {
+            spec = spec.with_covariance(covariance).map_err(describe)?;
         }
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if base == Base::Multiband {

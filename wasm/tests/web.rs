@@ -27,6 +27,7 @@ struct Args<'a> {
     tiling: &'a str,
     density: f64,
     kernel: &'a str,
+    covariance: &'a str,
     projected: bool,
     filtered: bool,
     infinite: bool,
@@ -46,6 +47,7 @@ const ARGS: Args = Args {
     tiling: "blended",
     density: 10.0,
     kernel: "cosine",
+    covariance: "low-pass",
     projected: false,
     filtered: false,
     infinite: false,
@@ -71,6 +73,7 @@ impl Args<'_> {
             self.tiling,
             self.density,
             self.kernel,
+            self.covariance,
             self.projected,
             self.filtered,
             self.infinite,
@@ -469,4 +472,43 @@ fn sparse_density_and_kernel_change_the_image() {
         ..ARGS
     };
     assert!(render(ARGS).0 == render(other).0, "perlin ignores them");
+}
+
+/// Wiener noise's covariance changes the image, a bad one is refused, and other noises ignore
+/// it.
+#[wasm_bindgen_test]
+fn wiener_covariance_changes_the_image() {
+    let ctx = canvas();
+    let render = |args: Args| {
+        let mut demo = Demo::new(64).unwrap();
+        demo.render(&args.build().unwrap());
+        demo.draw(&ctx).unwrap();
+        ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
+    };
+    let wiener = Args {
+        kind: "wiener",
+        zoom: 8.0,
+        ..ARGS
+    };
+    let low = render(wiener);
+    let band = render(Args {
+        covariance: "band-pass",
+        ..wiener
+    });
+    assert!(low != band, "the covariance changes the image");
+    assert!(
+        render(ARGS)
+            == render(Args {
+                covariance: "band-pass",
+                ..ARGS
+            }),
+        "perlin ignores it"
+    );
+    let e = Args {
+        covariance: "high-pass",
+        ..wiener
+    }
+    .build()
+    .unwrap_err();
+    assert!(e.contains("covariance must be"), "{e}");
 }

@@ -14,10 +14,10 @@
 //! root, so it has variance 1 and mean 0 (the weights have mean 0) at every density.
 
 use super::kernel::Kernel;
-use crate::radial::ball_volume;
 use super::{Impulses, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
 use crate::hash::CellHash;
+use crate::radial::ball_volume;
 use crate::{Error, I16F16, Noise, NoiseGradient, Real};
 
 /// Lewis's sparse convolution noise in `D` dimensions (1 to 4).

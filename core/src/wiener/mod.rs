@@ -148,9 +148,13 @@ impl Covariance {
 const fn profile(covariance: Covariance, d: usize) -> Profile {
     match covariance {
         Covariance::LowPass => Profile::Wendland,
-        Covariance::BandPass => {
-            Profile::BandPass(if d < 1 { 1 } else if d > 4 { 4 } else { d })
-        }
+        Covariance::BandPass => Profile::BandPass(if d < 1 {
+            1
+        } else if d > 4 {
+            4
+        } else {
+            d
+        }),
     }
 }
 

@@ -21,6 +21,7 @@ use bandnoise::levels::Levels;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
 };
+use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise::{
     FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,
 };
@@ -129,6 +130,23 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     }
     if let Ok(n) = sparse.with_fixed_count(black_box(3)) {
         add(n.sample_with_gradient([p[1], p[2]]).1[1]);
+    }
+    // Wiener noise with either covariance (the choice hidden from the optimiser): sample,
+    // gradient and a grid.
+    let covariance = if black_box(true) {
+        Covariance::BandPass
+    } else {
+        Covariance::LowPass
+    };
+    let wiener = WienerNoise::<3>::new(black_box(6)).with_covariance(covariance);
+    add(wiener.sample([p[0], p[1], p[2]]));
+    add(wiener.sample_with_gradient([p[3], p[1], p[2]]).1[2]);
+    if WienerNoise::<2>::new(black_box(6))
+        .with_covariance(covariance)
+        .fill_grid(&grid, &mut out)
+        .is_ok()
+    {
+        add(out.get(black_box(9)).copied().unwrap_or(R::ZERO));
     }
     let xs = black_box([p[0]; 20]);
     let ys = black_box([p[3]; 20]);
