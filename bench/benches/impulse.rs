@@ -1,4 +1,5 @@
-//! What sparse convolution noise costs at each density, so a user can choose: ns per sample
+//! What sparse convolution noise costs at each density, so a user can choose, and what
+//! Wiener noise costs with each covariance: ns per sample
 //! (point, `f32`) on the off-lattice grid of the peer benchmark, and the ratio to bandnoise's
 //! Perlin noise of the same dimension measured in the same rounds (each round times Perlin
 //! and every configuration one after the other over the same rows, milliseconds apart; the
@@ -10,6 +11,7 @@
 use bandnoise::Noise;
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
 use bandnoise::lattice::Perlin;
+use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise_bench::{LAYOUTS, N, Run, quantile, seconds};
 
 /// Rounds of the paired measurement.
@@ -21,6 +23,7 @@ const ROWS: usize = 8;
 fn configurations<const D: usize>() -> Vec<(String, Run)>
 where
     SparseConvolution<D>: Noise<f32, D>,
+    WienerNoise<D>: Noise<f32, D>,
     Perlin: Noise<f32, D>,
 {
     let layout = LAYOUTS[1];
@@ -62,6 +65,13 @@ where
         format!("sparse-{D}d cosine, 3 per cell fixed, batch"),
         layout.batch::<_, D>(three),
     ));
+    for covariance in [Covariance::LowPass, Covariance::BandPass] {
+        let noise = WienerNoise::<D>::new(0).with_covariance(covariance);
+        all.push((
+            format!("wiener-{D}d {covariance:?}"),
+            layout.point::<_, D>(noise),
+        ));
+    }
     all
 }
 

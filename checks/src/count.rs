@@ -5,6 +5,7 @@ use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
 use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
+use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise::{I16F16, Noise, Real};
 
 /// Samples per workload.
@@ -42,13 +43,17 @@ pub const OUTPUT_NAMES: [&str; 7] = [
 /// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
 /// density (10 impulses per kernel volume) and at 3 impulses per cell, with their own
 /// baseline. A program of its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
-pub const IMPULSE_NAMES: [&str; 6] = [
+pub const IMPULSE_NAMES: [&str; 10] = [
     "baseline impulse",
     "sparse 2D I16F16",
     "sparse 2D f32",
     "sparse 3D I16F16",
     "sparse 3D f32",
     "sparse 3D I16F16 3 per cell",
+    "wiener 2D I16F16",
+    "wiener 2D f32",
+    "wiener band-pass 2D I16F16",
+    "wiener 3D I16F16",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -157,5 +162,12 @@ pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
     acc ^= workload::<I16F16, 3>(begin, end, |q| bits(three.sample(q)));
     acc ^= workload::<f32, 3>(begin, end, |q| bits(three.sample(q)));
     acc ^= workload::<I16F16, 3>(begin, end, |q| bits(fixed.sample(q)));
+    let wiener = WienerNoise::<2>::new(1);
+    let band = wiener.clone().with_covariance(Covariance::BandPass);
+    let wiener3 = WienerNoise::<3>::new(1);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(wiener.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(wiener.sample(q)));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(band.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(wiener3.sample(q)));
     acc
 }

@@ -32,6 +32,14 @@ pub(crate) enum Profile {
 }
 
 impl Profile {
+    /// The same function in `d` dimensions (only the band-pass covariance depends on it).
+    pub(crate) const fn in_dimension(self, d: usize) -> Self {
+        match self {
+            Profile::BandPass(_) => Profile::BandPass(d),
+            other => other,
+        }
+    }
+
     /// The squared radius of the support, as a power of two: `S = 2^shift`.
     pub(crate) const fn support_shift(self) -> u32 {
         match self {
@@ -50,7 +58,7 @@ impl Profile {
             Profile::Cosine => cosine(s),
             Profile::CatmullRom => catmull_rom(s),
             Profile::Wendland => wendland(s),
-            Profile::BandPass(d) => band_pass(s, d, BAND_PASS_A1[d - 1]),
+            Profile::BandPass(d) => band_pass(s, d, band_pass_a1_of(d)),
         }
     }
 
@@ -82,6 +90,27 @@ impl Profile {
             k += 1;
         }
         sum / (3.0 * 512.0) * sphere_area(d)
+    }
+}
+
+/// `∫h²` of `profile` in dimensions 1 to 4 (index `D − 1`), for a compile-time table: the
+/// quadrature is too slow to run per construction on a microcontroller without an FPU.
+pub(crate) const fn powers(profile: Profile) -> [f64; 4] {
+    [
+        profile.in_dimension(1).integral(1, 2),
+        profile.in_dimension(2).integral(2, 2),
+        profile.in_dimension(3).integral(3, 2),
+        profile.in_dimension(4).integral(4, 2),
+    ]
+}
+
+/// The entry of a table of [`powers`] for `d` dimensions.
+pub(crate) const fn power_in(powers: &[f64; 4], d: usize) -> f64 {
+    match d {
+        1 => powers[0],
+        2 => powers[1],
+        3 => powers[2],
+        _ => powers[3],
     }
 }
 
@@ -269,10 +298,25 @@ const BAND_PASS_A1: [f64; 4] = [
     band_pass_a1(4),
 ];
 
+/// [`BAND_PASS_A1`] for `D` dimensions (constant indices: no bounds check at run time).
+const fn band_pass_a1_of(d: usize) -> f64 {
+    match d {
+        1 => BAND_PASS_A1[0],
+        2 => BAND_PASS_A1[1],
+        3 => BAND_PASS_A1[2],
+        _ => BAND_PASS_A1[3],
+    }
+}
+
 /// The band-pass covariance in `D` dimensions with `a₁ = a1`, and its derivative in `s`:
 /// `h(s) = (1 − s)(2 − s)(3 − s)/6 · (1 − s/4)⁸ · (1 + a₁s + a₂s² + a₃s³)`.
 const fn band_pass(s: f64, d: usize, a1: f64) -> (f64, f64) {
-    let [a2, a3] = BAND_PASS_A[d - 1];
+    let [a2, a3] = match d {
+        1 => BAND_PASS_A[0],
+        2 => BAND_PASS_A[1],
+        3 => BAND_PASS_A[2],
+        _ => BAND_PASS_A[3],
+    };
     // Value and derivative of each factor, multiplied by the product rule.
     let zeros = (
         (1.0 - s) * (2.0 - s) * (3.0 - s) / 6.0,

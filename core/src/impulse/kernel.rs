@@ -11,7 +11,7 @@
 //! | [`Kernel::CatmullRom`] | 257, `Δ = 1/256` | 2056 B | 2e-6; 1.5e-4 for `d < 1/16`, where its `d³` term is not smooth in `d²` |
 
 use crate::Real;
-use crate::radial::{Profile, Table};
+use crate::radial::{Profile, Table, power_in, powers};
 
 /// A radial kernel of radius 1 (in cell units: the cell size is the kernel's radius).
 ///
@@ -85,6 +85,17 @@ impl Kernel {
     #[must_use]
     pub const fn power(self, d: usize) -> f64 {
         self.profile().integral(d, 2)
+    }
+
+    /// [`power`](Self::power) from a table built at compile time (the quadrature is slow
+    /// without an FPU), for `d` in 1..=4.
+    pub(crate) fn power_of(self, d: usize) -> f64 {
+        const COSINE_POWERS: [f64; 4] = powers(Profile::Cosine);
+        const CATMULL_ROM_POWERS: [f64; 4] = powers(Profile::CatmullRom);
+        match self {
+            Kernel::Cosine => power_in(&COSINE_POWERS, d),
+            Kernel::CatmullRom => power_in(&CATMULL_ROM_POWERS, d),
+        }
     }
 }
 

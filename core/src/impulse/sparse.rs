@@ -85,7 +85,7 @@ impl<const D: usize> SparseConvolution<D> {
     }
 
     fn build(hash: CellHash, kernel: Kernel, impulses: Impulses) -> Self {
-        let sigma = libm::sqrt(impulses.variance(kernel.power(D)));
+        let sigma = libm::sqrt(impulses.variance(kernel.power_of(D)));
         let scale = (1.0 / sigma) as f32;
         Self {
             hash,
@@ -188,7 +188,7 @@ impl<const D: usize> SparseConvolution<D> {
     /// which the noise divides by.
     #[must_use]
     pub fn sigma(&self) -> f64 {
-        libm::sqrt(self.impulses.variance(self.kernel.power(D)))
+        libm::sqrt(self.impulses.variance(self.kernel.power_of(D)))
     }
 }
 

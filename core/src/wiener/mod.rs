@@ -39,7 +39,7 @@
 
 use crate::batch::LANES;
 use crate::hash::CellHash;
-use crate::radial::{Profile, Table};
+use crate::radial::{Profile, Table, power_in, powers};
 use crate::{I16F16, Noise, NoiseGradient, Real};
 
 /// A covariance of Wiener-interpolated noise: an isotropic function of the distance that
@@ -286,7 +286,14 @@ impl<const D: usize> WienerNoise<D> {
     }
 
     fn sigma_of(covariance: Covariance) -> f64 {
-        libm::sqrt(VALUE_VARIANCE * covariance.power(D))
+        // ∫h² from compile-time tables (the quadrature is slow without an FPU).
+        const LOW: [f64; 4] = powers(Profile::Wendland);
+        const BAND: [f64; 4] = powers(Profile::BandPass(1));
+        let power = match covariance {
+            Covariance::LowPass => power_in(&LOW, D),
+            Covariance::BandPass => power_in(&BAND, D),
+        };
+        libm::sqrt(VALUE_VARIANCE * power)
     }
 
     /// The bound on `|sample(p)|` in every number type (see [Amplitude](Self#amplitude)).
