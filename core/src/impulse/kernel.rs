@@ -1,17 +1,18 @@
-//! The radial kernels of sparse convolution noise, tabulated against the squared distance so
-//! that no square root is taken per impulse (Lewis 1989, §4: "remove square roots by indexing
-//! a pre-warped table `ĥ(d²) = h(√d²)`"; the tables are the crate's radial tables).
+//! The radial kernels of sparse convolution noise, as functions of the squared distance (Lewis
+//! 1989, §4: "remove square roots by indexing a pre-warped table `ĥ(d²) = h(√d²)`"): Lewis's
+//! cosine from a table (the crate's radial tables), Peachey's spline from its formula.
 //!
-//! Each kernel has radius 1. Errors of the interpolation against the kernel in `f64` (tested;
-//! `f32` adds 3e-7, I16F16 1e-4):
+//! Each kernel has radius 1. Errors against the kernel in `f64` (tested; `f32` adds 3e-7 to the
+//! cosine's and is within 1e-6 of the spline; I16F16 within 1e-4 and 3e-4, its square root
+//! truncating):
 //!
-//! | kernel | knots | table | error |
-//! |---|---|---|---|
-//! | [`Kernel::Cosine`] | 33, `Δ = 1/32` | 264 B | 1e-8 |
-//! | [`Kernel::CatmullRom`] | 257, `Δ = 1/256` | 2056 B | 2e-6; 1.5e-4 for `d < 1/16`, where its `d³` term is not smooth in `d²` |
+//! | kernel | evaluation | error |
+//! |---|---|---|
+//! | [`Kernel::Cosine`] | table of 33 knots, `Δ = 1/32` (264 B) | 1e-8 |
+//! | [`Kernel::CatmullRom`] | its formula, with one square root (its `d³` term is not smooth in `d²`: a table would need many knots) | the type's rounding (I16F16: 3e-4) |
 
 use crate::Real;
-use crate::radial::{Profile, Table, power_in, powers};
+use crate::radial::{Profile, Table, knots, power_in, powers};
 
 /// A radial kernel of radius 1 (in cell units: the cell size is the kernel's radius).
 ///
@@ -46,7 +47,7 @@ impl Kernel {
     pub fn at<R: Real>(self, d2: R) -> R {
         match self {
             Kernel::Cosine => COSINE.at(d2),
-            Kernel::CatmullRom => CATMULL_ROM.at(d2),
+            Kernel::CatmullRom => catmull_rom::<R, false>(d2).0,
         }
     }
 
@@ -59,7 +60,7 @@ impl Kernel {
     pub fn at_with_slope<R: Real>(self, d2: R) -> (R, R) {
         match self {
             Kernel::Cosine => COSINE.at_with_slope(d2),
-            Kernel::CatmullRom => CATMULL_ROM.at_with_slope(d2),
+            Kernel::CatmullRom => catmull_rom::<R, true>(d2),
         }
     }
 
@@ -100,9 +101,41 @@ impl Kernel {
 }
 
 /// The cosine's table: 33 knots, `Δ = 1/32`.
-static COSINE: Table<33> = Table::new(Profile::Cosine);
-/// The Catmull-Rom spline's table: 257 knots (its `s√s` term needs finer knots near 0).
-static CATMULL_ROM: Table<257> = Table::new(Profile::CatmullRom);
+static COSINE: Table = Table::new(Profile::Cosine, &COSINE_KNOTS);
+static COSINE_KNOTS: [[i32; 2]; 33] = knots(Profile::Cosine);
+
+/// Peachey's spline at squared distance `s` from its formula (no table): with `d = √s`,
+/// `1 − 10s + 12sd` below `d = ½`, `2 − 8d + 10s − 4sd` from there to 1; and if `SLOPE` its
+/// derivative in `s`, `−10 + 18d` and `(−4 + 10d − 6s)/d` (else 0).
+#[inline]
+fn catmull_rom<R: Real, const SLOPE: bool>(s: R) -> (R, R) {
+    if s.is_nan() || s >= R::ONE {
+        return (R::ZERO, R::ZERO);
+    }
+    let s = if s > R::ZERO { s } else { R::ZERO };
+    let d = s.sqrt();
+    let sd = s.mul_fraction(d);
+    let ten_s = s.mul_fraction(R::from_i32(10));
+    if s < R::from_ratio(1, 2) {
+        let value = R::ONE - ten_s + sd.mul_fraction(R::from_i32(12));
+        let slope = if SLOPE {
+            d.mul_fraction(R::from_i32(18)) - R::from_i32(10)
+        } else {
+            R::ZERO
+        };
+        (value, slope)
+    } else {
+        let value = R::from_i32(2) - d.mul_fraction(R::from_i32(8)) + ten_s
+            - sd.mul_fraction(R::from_i32(4));
+        let slope = if SLOPE {
+            (d.mul_fraction(R::from_i32(10)) - s.mul_fraction(R::from_i32(6)) - R::from_i32(4))
+                .div(d)
+        } else {
+            R::ZERO
+        };
+        (value, slope)
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -112,9 +145,9 @@ mod tests {
     /// The errors the module docs state.
     #[test]
     fn tables_follow_the_kernels() {
-        for (kernel, inner, outer) in [
-            (Kernel::Cosine, 1e-8, 1e-8),
-            (Kernel::CatmullRom, 1.5e-4, 2e-6),
+        for (kernel, inner, outer, single, fixed) in [
+            (Kernel::Cosine, 1e-8, 1e-8, 3e-7, 1e-4),
+            (Kernel::CatmullRom, 1e-14, 1e-14, 1e-6, 3e-4),
         ] {
             let (mut wi, mut wo) = (0.0f64, 0.0f64);
             for i in 0..=100_000 {
@@ -127,10 +160,10 @@ mod tests {
                 }
                 // f32 and I16F16 add only their roundings.
                 let e32 = (kernel.at(s as f32) as f64 - kernel.at(s as f32 as f64)).abs();
-                assert!(e32 < 3e-7, "{kernel:?} {s} {e32}");
+                assert!(e32 < single, "{kernel:?} {s} {e32}");
                 let q = I16F16::from_num(s);
                 let eq = (kernel.at(q).to_num::<f64>() - kernel.at(q.to_num::<f64>())).abs();
-                assert!(eq < 1e-4, "{kernel:?} {s} {eq}");
+                assert!(eq < fixed, "{kernel:?} {s} {eq}");
             }
             assert!(wi < inner && wo < outer, "{kernel:?} {wi} {wo}");
         }

@@ -37,19 +37,21 @@
 //! `(b₀ + b₁ + b₂ + b₃ − 510)/512`, an approximately Gaussian value (Irwin-Hall; excess
 //! kurtosis −0.3) with `σ_η² = 4 (256² − 1)/12 / 512²`, exact in every number type.
 
-use crate::batch::LANES;
 use crate::hash::CellHash;
-use crate::radial::{Profile, Table, power_in, powers};
+use crate::hash::chain::ChainHash;
+use crate::radial::Profile;
+use crate::wavelet::constmath;
 use crate::{I16F16, Noise, NoiseGradient, Real};
 
 /// A covariance of Wiener-interpolated noise: an isotropic function of the distance that
-/// satisfies Lewis's lattice condition (0 at every non-zero lattice offset), tabulated by
-/// squared distance as the crate's radial functions are.
+/// satisfies Lewis's lattice condition (0 at every non-zero lattice offset), evaluated from its
+/// formula of the squared distance in each number type (no table: the errors are the type's
+/// roundings, tested: 1e-6 in `f32`, 3e-4 in I16F16).
 ///
-/// | covariance | support | spectrum | table | table error |
-/// |---|---|---|---|---|
-/// | [`LowPass`](Self::LowPass) | radius 1: the `2^D` corners of the cell | low-pass | 257 knots | 3e-6; 2.5e-4 for `d < 1/16` |
-/// | [`BandPass`](Self::BandPass) | radius 2: up to `4^D` points | band-pass, 0 at `f = 0`, peak near 0.8–1 cycle per cell | 129 knots per dimension | 6e-6 |
+/// | covariance | support | spectrum |
+/// |---|---|---|
+/// | [`LowPass`](Self::LowPass) | radius 1: the `2^D` corners of the cell | low-pass |
+/// | [`BandPass`](Self::BandPass) | radius 2: up to `4^D` points | band-pass, 0 at `f = 0`, peak near 0.8–1 cycle per cell |
 ///
 /// # Examples
 ///
@@ -92,33 +94,76 @@ impl Covariance {
     }
 
     /// The covariance over `C(0)`, `h(√s)`, at squared distance `s` in `D` dimensions (1 to
-    /// 4), from its table: 0 from the rim on (and for NaN), 1 for `s ≤ 0`.
+    /// 4), evaluated from its formula in the number type: 0 from the rim on (and for NaN), 1
+    /// for `s ≤ 0`.
     #[inline]
     #[must_use]
     pub fn at<R: Real, const D: usize>(self, s: R) -> R {
-        match self {
-            Covariance::LowPass => LOW_PASS.at(s),
-            Covariance::BandPass => match D {
-                1 => BAND_PASS_1.at(s),
-                2 => BAND_PASS_2.at(s),
-                3 => BAND_PASS_3.at(s),
-                _ => BAND_PASS_4.at(s),
-            },
-        }
+        self.evaluate::<R, D, false>(s).0
     }
 
     /// [`at`](Self::at) and its derivative with respect to `s`.
     #[inline]
     #[must_use]
     pub fn at_with_slope<R: Real, const D: usize>(self, s: R) -> (R, R) {
+        self.evaluate::<R, D, true>(s)
+    }
+
+    /// The value and, if `SLOPE`, the derivative in `s` (else 0), with `+ − ×` and (low-pass)
+    /// one square root, the same operations in every number type. Every factor is below 12
+    /// and every product below 500 in magnitude, so the products need no saturation
+    /// (`mul_fraction`).
+    #[inline]
+    fn evaluate<R: Real, const D: usize, const SLOPE: bool>(self, s: R) -> (R, R) {
+        let rim = R::from_i32((self.radius() * self.radius()) as i32);
+        if s.is_nan() || s >= rim {
+            return (R::ZERO, R::ZERO);
+        }
+        let s = if s > R::ZERO { s } else { R::ZERO };
         match self {
-            Covariance::LowPass => LOW_PASS.at_with_slope(s),
-            Covariance::BandPass => match D {
-                1 => BAND_PASS_1.at_with_slope(s),
-                2 => BAND_PASS_2.at_with_slope(s),
-                3 => BAND_PASS_3.at_with_slope(s),
-                _ => BAND_PASS_4.at_with_slope(s),
-            },
+            Covariance::LowPass => {
+                // (1 − d)⁴(4d + 1); d/ds = −10 (1 − d)³.
+                let d = s.sqrt();
+                let e = R::ONE - d;
+                let e3 = e.mul_fraction(e).mul_fraction(e);
+                let value = e3.mul_fraction(e).mul_fraction(d + d + d + d + R::ONE);
+                let slope = if SLOPE {
+                    e3.mul_fraction(R::from_i32(-10))
+                } else {
+                    R::ZERO
+                };
+                (value, slope)
+            }
+            Covariance::BandPass => {
+                let [c1, c2, c3] = band_pass_coefficients::<R, D>();
+                let (u, v, w) = (R::ONE - s, R::from_i32(2) - s, R::from_i32(3) - s);
+                let zeros = u.mul_fraction(v).mul_fraction(w);
+                let poly = R::ONE + s.mul_fraction(c1 + s.mul_fraction(c2 + s.mul_fraction(c3)));
+                let q = R::ONE - s.mul_fraction(R::from_ratio(1, 2));
+                let q2 = q.mul_fraction(q);
+                let q4 = q2.mul_fraction(q2);
+                let q8 = q4.mul_fraction(q4);
+                let sixth = R::from_setting(1.0 / 6.0, SIXTH);
+                let head = zeros.mul_fraction(poly).mul_fraction(sixth);
+                // At 0 (the lattice point itself) exactly 1, as the interpolation needs: the
+                // rounded 1/6 would leave 1 ± 2⁻¹⁶ in fixed point.
+                let value = if s > R::ZERO {
+                    head.mul_fraction(q8)
+                } else {
+                    R::ONE
+                };
+                let slope = if SLOPE {
+                    let dzeros = -(v.mul_fraction(w) + u.mul_fraction(w) + u.mul_fraction(v));
+                    let dpoly = c1 + s.mul_fraction(c2 + c2 + s.mul_fraction(c3 + c3 + c3));
+                    let dhead =
+                        (dzeros.mul_fraction(poly) + zeros.mul_fraction(dpoly)).mul_fraction(sixth);
+                    let q7 = q4.mul_fraction(q2).mul_fraction(q);
+                    dhead.mul_fraction(q8) - (head + head).mul_fraction(q7)
+                } else {
+                    R::ZERO
+                };
+                (value, slope)
+            }
         }
     }
 
@@ -193,13 +238,47 @@ const _: () = {
     }
 };
 
-/// The low-pass covariance's table (its `s√s` term needs fine knots near 0).
-static LOW_PASS: Table<257> = Table::new(Profile::Wendland);
-/// The band-pass covariance's tables, one per dimension: `Δs = 1/32`.
-static BAND_PASS_1: Table<129> = Table::new(Profile::BandPass(1));
-static BAND_PASS_2: Table<129> = Table::new(Profile::BandPass(2));
-static BAND_PASS_3: Table<129> = Table::new(Profile::BandPass(3));
-static BAND_PASS_4: Table<129> = Table::new(Profile::BandPass(4));
+/// `1/σ` of `covariance` in `d` dimensions as `f32` and I16F16 (nearest), at compile time.
+const fn scales(covariance: Covariance, d: usize) -> (f32, I16F16) {
+    let sigma = constmath::sqrt(VALUE_VARIANCE * covariance.power(d));
+    let scale = (1.0 / sigma) as f32;
+    (scale, fixed_of(scale))
+}
+
+/// `1/6` in I16F16.
+const SIXTH: I16F16 = I16F16::from_bits(10_923);
+
+/// The band-pass polynomial's `[a₁, a₂, a₃]` in `D` dimensions as `R` (floats: the `f32`
+/// nearest each; fixed point: the I16F16 nearest).
+#[inline]
+fn band_pass_coefficients<R: Real, const D: usize>() -> [R; 3] {
+    let [a1, a2, a3] = const { band_pass_f32(D) };
+    let fixed = const {
+        let [a1, a2, a3] = band_pass_f32(D);
+        [fixed_of(a1), fixed_of(a2), fixed_of(a3)]
+    };
+    [
+        R::from_setting(a1, fixed[0]),
+        R::from_setting(a2, fixed[1]),
+        R::from_setting(a3, fixed[2]),
+    ]
+}
+
+/// The band-pass coefficients in `d` dimensions, as `f32`.
+const fn band_pass_f32(d: usize) -> [f32; 3] {
+    let [a1, a2, a3] = crate::radial::band_pass_coefficients(d);
+    [a1 as f32, a2 as f32, a3 as f32]
+}
+
+/// The I16F16 nearest `x` (ties away from zero), at compile time.
+const fn fixed_of(x: f32) -> I16F16 {
+    let scaled = x as f64 * 65_536.0;
+    I16F16::from_bits(if scaled < 0.0 {
+        -((-scaled + 0.5) as i32)
+    } else {
+        (scaled + 0.5) as i32
+    })
+}
 
 /// `σ_η²`: the variance of a lattice value, `4 (256² − 1)/12 / 512²`.
 pub const VALUE_VARIANCE: f64 = 4.0 * 65_535.0 / 12.0 / 262_144.0;
@@ -257,12 +336,16 @@ impl<const D: usize> WienerNoise<D> {
     }
 
     fn build(hash: CellHash, covariance: Covariance) -> Self {
-        let scale = (1.0 / Self::sigma_of(covariance)) as f32;
+        // 1/σ at compile time, in both types.
+        let (scale, scale_fixed) = match covariance {
+            Covariance::LowPass => const { scales(Covariance::LowPass, D) },
+            Covariance::BandPass => const { scales(Covariance::BandPass, D) },
+        };
         Self {
             hash,
             covariance,
             scale,
-            scale_fixed: I16F16::from_f32(scale),
+            scale_fixed,
         }
     }
 
@@ -286,14 +369,7 @@ impl<const D: usize> WienerNoise<D> {
     }
 
     fn sigma_of(covariance: Covariance) -> f64 {
-        // ∫h² from compile-time tables (the quadrature is slow without an FPU).
-        const LOW: [f64; 4] = powers(Profile::Wendland);
-        const BAND: [f64; 4] = powers(Profile::BandPass(1));
-        let power = match covariance {
-            Covariance::LowPass => power_in(&LOW, D),
-            Covariance::BandPass => power_in(&BAND, D),
-        };
-        libm::sqrt(VALUE_VARIANCE * power)
+        libm::sqrt(VALUE_VARIANCE * covariance.power(D))
     }
 
     /// The bound on `|sample(p)|` in every number type (see [Amplitude](Self#amplitude)).
@@ -305,48 +381,61 @@ impl<const D: usize> WienerNoise<D> {
     }
 
     /// Calls `visit(δ, s, η)` for each lattice point within the covariance's support of `p`:
-    /// the offset from the point to `p`, its square length and the point's value.
+    /// the offset from the point to `p`, its squared length and the point's value. The
+    /// candidates are the `(2r)^D` points around `p`'s cell (offsets 0 and 1 along each axis for
+    /// radius 1, −1 to 2 for radius 2), first axis slowest; those at squared distance `r²` or
+    /// more are skipped before they are hashed. One flat loop (rather than the odometer of
+    /// [`CellHash::near`], which shares hash prefixes) keeps the code small: the browser demo's
+    /// size budget.
     #[inline]
-    fn walk<R: Real>(&self, p: [R; D], visit: impl FnMut([R; D], R, R)) {
-        match self.covariance {
-            Covariance::LowPass => walk::<R, D, 2>(&self.hash, p, visit),
-            Covariance::BandPass => walk::<R, D, 4>(&self.hash, p, visit),
+    fn walk<R: Real>(&self, p: [R; D], mut visit: impl FnMut([R; D], R, R)) {
+        let r = self.covariance.radius();
+        // Points per axis, as a power of two, and the first offset.
+        let (bits, low) = if r == 1 { (1u32, 0i32) } else { (2, -1) };
+        let mut cells = [[0u32; 4]; D];
+        let mut deltas = [[R::ZERO; 4]; D];
+        let mut gaps = [[R::ZERO; 4]; D];
+        for a in 0..D {
+            let (c, f) = p[a].split();
+            for k in 0..4 {
+                let o = low + k as i32;
+                let d = f - R::from_i32(o);
+                cells[a][k] = c.wrapping_add(o) as u32;
+                deltas[a][k] = d;
+                gaps[a][k] = d.mul_rn(d);
+            }
+        }
+        let reach = R::from_i32((r * r) as i32);
+        let mask = (1usize << bits) - 1;
+        for k in 0..1usize << (bits as usize * D) {
+            // Each axis's offset index: its digit, axis 0 the most significant.
+            let digits: [usize; D] =
+                core::array::from_fn(|a| (k >> (bits as usize * (D - 1 - a))) & mask & 3);
+            let mut s = R::ZERO;
+            for (g, &i) in gaps.iter().zip(&digits) {
+                s = s + g[i];
+            }
+            if s >= reach {
+                continue;
+            }
+            let mut key = self.hash.start();
+            for (c, &i) in cells.iter().zip(&digits) {
+                key = self.hash.step(key, c[i]);
+            }
+            visit(
+                core::array::from_fn(|a| deltas[a][digits[a]]),
+                s,
+                value(key),
+            );
         }
     }
 }
 
-/// [`WienerNoise::walk`] over the `N^D` points around `p`'s cell (`N` = 2: offsets 0, 1; 4:
-/// −1 to 2), those at squared distance `(N/2)²` or more skipped.
-#[inline]
-fn walk<R: Real, const D: usize, const N: usize>(
-    hash: &CellHash,
-    p: [R; D],
-    mut visit: impl FnMut([R; D], R, R),
-) {
-    let low = 1 - (N / 2) as i32;
-    let mut cells = [[0u32; N]; D];
-    let mut deltas = [[R::ZERO; N]; D];
-    let mut gaps = [[R::ZERO; N]; D];
-    for a in 0..D {
-        let (c, f) = p[a].split();
-        for k in 0..N {
-            let o = low + k as i32;
-            let d = f - R::from_i32(o);
-            cells[a][k] = c.wrapping_add(o) as u32;
-            deltas[a][k] = d;
-            gaps[a][k] = d.mul_rn(d);
-        }
-    }
-    let reach = R::from_i32(((N / 2) * (N / 2)) as i32);
-    hash.near(&cells, &gaps, reach, |digit, key, s| {
-        let delta = core::array::from_fn(|a| deltas[a][digit[a].min(N - 1)]);
-        visit(delta, s, value(key));
-    });
-}
-
-impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
-    #[inline]
-    fn sample(&self, p: [R; D]) -> R {
+impl<const D: usize> WienerNoise<D> {
+    /// [`Noise::sample`], out of line: one copy per number type keeps the code small (the
+    /// browser demo's size budget) at the cost of a call.
+    #[inline(never)]
+    fn value<R: Real>(&self, p: [R; D]) -> R {
         let covariance = self.covariance;
         let mut total = R::ZERO;
         self.walk(p, |_, s, eta| {
@@ -356,15 +445,16 @@ impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
             .mul_rn(R::from_setting(self.scale, self.scale_fixed))
             .canonical()
     }
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        self.value(p)
+    }
 
     fn amplitude_bound(&self) -> f32 {
         WienerNoise::amplitude_bound(self)
-    }
-
-    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
-        for (l, o) in out.iter_mut().enumerate() {
-            *o = self.sample(crate::batch::lane(p, l));
-        }
     }
 }
 
@@ -395,34 +485,43 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for WienerNoise<D> {
 mod tests {
     use super::*;
 
-    /// The tables' errors the [`Covariance`] docs state, in every dimension.
+    /// The evaluation's errors the [`Covariance`] docs state (values and slopes; `f64` is the
+    /// formula itself), in every dimension.
     #[test]
-    fn tables_follow_the_covariances() {
-        for (covariance, d, inner, outer) in [
-            (Covariance::LowPass, 2, 2.5e-4, 3e-6),
-            (Covariance::BandPass, 1, 6e-6, 6e-6),
-            (Covariance::BandPass, 2, 6e-6, 6e-6),
-            (Covariance::BandPass, 3, 6e-6, 6e-6),
-            (Covariance::BandPass, 4, 6e-6, 6e-6),
-        ] {
-            let at = |s: f64| match d {
-                1 => covariance.at::<f64, 1>(s),
-                2 => covariance.at::<f64, 2>(s),
-                3 => covariance.at::<f64, 3>(s),
-                _ => covariance.at::<f64, 4>(s),
-            };
+    fn evaluation_follows_the_formulas() {
+        fn check<const D: usize>(covariance: Covariance) {
             let rim = f64::from(covariance.radius() * covariance.radius());
-            let (mut wi, mut wo) = (0.0f64, 0.0f64);
-            for i in 0..=100_000 {
-                let s = rim * i as f64 / 100_000.0;
-                let e = (at(s) - covariance.exact(d, s).0).abs();
-                if s < 1.0 / 256.0 {
-                    wi = wi.max(e);
-                } else {
-                    wo = wo.max(e);
-                }
+            let (mut e64, mut e32, mut eq, mut s32, mut sq) = (0f64, 0f64, 0f64, 0f64, 0f64);
+            for i in 0..=20_000 {
+                let s = rim * i as f64 / 20_000.0;
+                let (v, g) = covariance.exact(D, s);
+                let (v64, g64) = covariance.at_with_slope::<f64, D>(s);
+                e64 = e64.max((v64 - v).abs()).max((g64 - g).abs());
+                let (v32, g32) = covariance.at_with_slope::<f32, D>(s as f32);
+                let (v, g) = covariance.exact(D, f64::from(s as f32));
+                e32 = e32.max((f64::from(v32) - v).abs());
+                s32 = s32.max((f64::from(g32) - g).abs());
+                let q = I16F16::from_num(s);
+                let (vq, gq) = covariance.at_with_slope::<I16F16, D>(q);
+                let (v, g) = covariance.exact(D, q.to_num::<f64>());
+                eq = eq.max((vq.to_num::<f64>() - v).abs());
+                sq = sq.max((gq.to_num::<f64>() - g).abs());
+                assert_eq!(covariance.at::<f32, D>(s as f32), v32);
+                assert_eq!(covariance.at::<I16F16, D>(q), vq);
             }
-            assert!(wi < inner && wo < outer, "{covariance:?} {d}: {wi} {wo}");
+            // f64 takes the band-pass coefficients as f32, as every float type does.
+            assert!(e64 < 1e-6, "{covariance:?} {D}: {e64}");
+            assert!(e32 < 1e-6 && s32 < 2e-5, "{covariance:?} {D}: {e32} {s32}");
+            assert!(eq < 3e-4 && sq < 3e-3, "{covariance:?} {D}: {eq} {sq}");
+        }
+        for covariance in [Covariance::LowPass, Covariance::BandPass] {
+            check::<1>(covariance);
+            check::<2>(covariance);
+            check::<3>(covariance);
+            check::<4>(covariance);
+            assert_eq!(covariance.at::<f32, 2>(f32::NAN), 0.0);
+            assert_eq!(covariance.at::<f32, 2>(-1.0), 1.0);
+            assert_eq!(covariance.at::<I16F16, 3>(I16F16::MAX), I16F16::ZERO);
         }
     }
 
