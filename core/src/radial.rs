@@ -1,10 +1,12 @@
-//! Radial functions tabulated against the squared distance, so that no square root is taken
-//! per evaluation (Lewis 1989, §4: "remove square roots by indexing a pre-warped table
-//! `ĥ(d²) = h(√d²)`"): the kernels of sparse convolution noise
+//! Radial functions of the squared distance: the kernels of sparse convolution noise
 //! ([`Kernel`](crate::impulse::Kernel)) and the covariances of Wiener-interpolated noise
-//! ([`Covariance`](crate::wiener::Covariance)).
+//! ([`Covariance`](crate::wiener::Covariance)). Each has its `f64` formula here ([`Profile`]:
+//! what tests compare with, and the integrals that normalise the noises, at compile time);
+//! Lewis's cosine is also tabulated against the squared distance, so that no square root is
+//! taken per evaluation (Lewis 1989, §4: "remove square roots by indexing a pre-warped table
+//! `ĥ(d²) = h(√d²)`"), the others are evaluated from their formulas in each number type.
 //!
-//! A table holds `ĥ(s)` and `ĥ′(s)·Δ` at the knots `s = kΔ` of the function's support
+//! A [`Table`] holds `ĥ(s)` and `ĥ′(s)·Δ` at the knots `s = kΔ` of the function's support
 //! `[0, S)` (`S` = 1 or 4: radius 1 or 2), computed at compile time in `f64` from the
 //! function's formula ([`Profile::exact`]) and stored in Q2.30, and is read by cubic Hermite
 //! interpolation with the same operations in every number type (as

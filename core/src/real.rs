@@ -341,7 +341,8 @@ pub trait Real:
     #[must_use]
     fn mul_rn(self, o: Self) -> Self;
     /// Square root; negative inputs (and NaN) give 0. Floats use `libm` (correctly rounded, so
-    /// identical everywhere); fixed point an integer square root, truncated.
+    /// identical everywhere); fixed point an integer square root, rounded to nearest (a
+    /// truncated root biases sums of many kernel values).
     #[must_use]
     fn sqrt(self) -> Self;
     /// Division. Floats: IEEE `/`. Fixed point saturates, and a zero divisor gives `MAX` or
@@ -609,7 +610,9 @@ fn log2_fixed_bits(bits: i32) -> i32 {
     (int_part << 16) | frac
 }
 
-/// `floor(sqrt(v))` by the digit-by-digit method: integers only, 24 steps for 48 bits.
+/// `√v` rounded to nearest, by the digit-by-digit method (integers only, 24 steps for 48
+/// bits) and the floor's remainder: `v − r² > r` means `v > (r + ½)² − ¼`, so `r + 1` is
+/// nearer.
 fn isqrt(v: u64) -> u64 {
     let (mut rem, mut root) = (v, 0u64);
     let mut bit = 1u64 << 62;
@@ -625,7 +628,7 @@ fn isqrt(v: u64) -> u64 {
         }
         bit >>= 2;
     }
-    root
+    if rem > root { root + 1 } else { root }
 }
 
 impl Real for I16F16 {
@@ -930,7 +933,8 @@ mod tests {
             let x = I16F16::from_bits(bits);
             let r = Real::sqrt(x).to_bits() as u64;
             let v = (bits as u64) << 16;
-            assert!(r * r <= v && (r + 1) * (r + 1) > v, "{bits}");
+            // Rounded to nearest: r² − r < v ≤ r² + r.
+            assert!((r * r < v + r || v == 0) && v <= r * r + r, "{bits}");
         }
         assert_eq!(Real::sqrt(I16F16::from_i32(-4)), I16F16::ZERO);
         assert_eq!(Real::sqrt(I16F16::from_i32(9)), I16F16::from_i32(3));
