@@ -75,20 +75,8 @@ impl Profile {
         while k <= n {
             let r = k as f64 / 512.0;
             let (h, _) = self.exact(r * r);
-            let mut f = if power == 1 { h } else { h * h };
-            let mut e = 1;
-            while e < d {
-                f *= r;
-                e += 1;
-            }
-            let w = if k == 0 || k == n {
-                1.0
-            } else if k % 2 == 1 {
-                4.0
-            } else {
-                2.0
-            };
-            sum += w * f;
+            let f = if power == 1 { h } else { h * h };
+            sum += simpson(k, n) * f * power_of(r, d - 1);
             k += 1;
         }
         sum / (3.0 * 512.0) * sphere_area(d)
@@ -371,24 +359,33 @@ const fn band_pass_a1(d: usize) -> f64 {
         let r = 2.0 * k as f64 / N as f64;
         let (h0, _) = band_pass(r * r, d, 0.0);
         let (h1, _) = band_pass(r * r, d, 1.0);
-        let mut rd = 1.0;
-        let mut e = 1;
-        while e < d {
-            rd *= r;
-            e += 1;
-        }
-        let w = if k == 0 || k == N {
-            1.0
-        } else if k % 2 == 1 {
-            4.0
-        } else {
-            2.0
-        };
-        i0 += w * h0 * rd;
-        i1 += w * (h1 - h0) * rd;
+        let w = simpson(k, N) * power_of(r, d - 1);
+        i0 += w * h0;
+        i1 += w * (h1 - h0);
         k += 1;
     }
     -i0 / i1
+}
+
+/// Simpson's weight of knot `k` of `n` (even): 1 at the ends, then 4, 2, 4, …
+const fn simpson(k: usize, n: usize) -> f64 {
+    if k == 0 || k == n {
+        1.0
+    } else if k % 2 == 1 {
+        4.0
+    } else {
+        2.0
+    }
+}
+
+/// `r^e`.
+const fn power_of(r: f64, e: usize) -> f64 {
+    let (mut p, mut i) = (1.0, 0);
+    while i < e {
+        p *= r;
+        i += 1;
+    }
+    p
 }
 
 /// Nearest integer (ties away from zero).

@@ -562,34 +562,37 @@ fn every_noise_type_in_core_is_described() {
     }
 }
 
+/// `spec` built for `D` dimensions samples `typed` bit for bit: values and gradients, f32 and
+/// I16F16, at 200 random points; the same amplitude bound.
+fn same_bits<const D: usize, N>(spec: &Spec, typed: &N, rng: &mut Rng)
+where
+    N: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+    SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
+{
+    let built = spec.build::<D>().expect("builds");
+    for _ in 0..200 {
+        let q: [I16F16; D] = rng.exact_point(100);
+        let f = bandnoise_tests::to_f32(q);
+        assert_eq!(
+            built.sample(f).to_bits(),
+            typed.sample(f).to_bits(),
+            "{spec}"
+        );
+        assert_eq!(built.sample(q), typed.sample(q), "{spec}");
+        let (a, b) = (built.sample_with_gradient(f), typed.sample_with_gradient(f));
+        assert_eq!(a.0.to_bits(), b.0.to_bits());
+        assert_eq!(a.1.map(f32::to_bits), b.1.map(f32::to_bits));
+    }
+    assert_eq!(
+        Noise::<f32, D>::amplitude_bound(&built),
+        Noise::<f32, D>::amplitude_bound(typed)
+    );
+}
+
 /// A sparse spec samples the typed noise it names bit for bit (value and gradient, f32 and
 /// I16F16, 1D–4D), and its settings are refused for other noises and out of range.
 #[test]
 fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
-    fn check<const D: usize>(spec: &Spec, typed: &SparseConvolution<D>, rng: &mut Rng)
-    where
-        SparseConvolution<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
-        SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
-    {
-        let built = spec.build::<D>().expect("builds");
-        for _ in 0..200 {
-            let q: [I16F16; D] = rng.exact_point(100);
-            let f = bandnoise_tests::to_f32(q);
-            assert_eq!(
-                built.sample(f).to_bits(),
-                typed.sample(f).to_bits(),
-                "{spec}"
-            );
-            assert_eq!(built.sample(q), typed.sample(q), "{spec}");
-            let (a, b) = (built.sample_with_gradient(f), typed.sample_with_gradient(f));
-            assert_eq!(a.0.to_bits(), b.0.to_bits());
-            assert_eq!(a.1.map(f32::to_bits), b.1.map(f32::to_bits));
-        }
-        assert_eq!(
-            Noise::<f32, D>::amplitude_bound(&built),
-            typed.amplitude_bound()
-        );
-    }
     let mut rng = Rng::from_env(186);
     let spec: Spec = "sparse seed=9 kernel=catmull-rom weights=uniform density=3"
         .parse()
@@ -599,16 +602,16 @@ fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
             .with_kernel(Kernel::CatmullRom)
             .with_weights(Weights::Uniform)
     };
-    check::<3>(&spec, &typed(9).with_density(3.0).unwrap(), &mut rng);
+    same_bits::<3, _>(&spec, &typed(9).with_density(3.0).unwrap(), &mut rng);
     let spec: Spec = "sparse seed=4 count=2".parse().expect("valid");
     let fixed = |s| SparseConvolution::<2>::new(s).with_fixed_count(2).unwrap();
-    check::<2>(&spec, &fixed(4), &mut rng);
-    check::<1>(
+    same_bits::<2, _>(&spec, &fixed(4), &mut rng);
+    same_bits::<1, _>(
         &Spec::new(Base::Sparse, 1),
         &SparseConvolution::<1>::new(1),
         &mut rng,
     );
-    check::<4>(
+    same_bits::<4, _>(
         &Spec::new(Base::Sparse, 1),
         &SparseConvolution::<4>::new(1),
         &mut rng,
@@ -647,42 +650,18 @@ fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
 /// I16F16, 1D–4D, both covariances), and a covariance is refused for other noises.
 #[test]
 fn wiener_specs_sample_their_typed_noise_bit_for_bit() {
-    fn check<const D: usize>(spec: &Spec, typed: &WienerNoise<D>, rng: &mut Rng)
-    where
-        WienerNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
-        SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D>,
-    {
-        let built = spec.build::<D>().expect("builds");
-        for _ in 0..200 {
-            let q: [I16F16; D] = rng.exact_point(100);
-            let f = bandnoise_tests::to_f32(q);
-            assert_eq!(
-                built.sample(f).to_bits(),
-                typed.sample(f).to_bits(),
-                "{spec}"
-            );
-            assert_eq!(built.sample(q), typed.sample(q), "{spec}");
-            let (a, b) = (built.sample_with_gradient(f), typed.sample_with_gradient(f));
-            assert_eq!(a.0.to_bits(), b.0.to_bits());
-            assert_eq!(a.1.map(f32::to_bits), b.1.map(f32::to_bits));
-        }
-        assert_eq!(
-            Noise::<f32, D>::amplitude_bound(&built),
-            typed.amplitude_bound()
-        );
-    }
     let mut rng = Rng::from_env(187);
     let band: Spec = "wiener seed=9 covariance=band-pass".parse().expect("valid");
     fn typed<const D: usize>(seed: u32) -> WienerNoise<D> {
         WienerNoise::new(seed).with_covariance(Covariance::BandPass)
     }
-    check::<1>(&band, &typed(9), &mut rng);
-    check::<2>(&band, &typed(9), &mut rng);
-    check::<3>(&band, &typed(9), &mut rng);
-    check::<4>(&band, &typed(9), &mut rng);
+    same_bits::<1, _>(&band, &typed(9), &mut rng);
+    same_bits::<2, _>(&band, &typed(9), &mut rng);
+    same_bits::<3, _>(&band, &typed(9), &mut rng);
+    same_bits::<4, _>(&band, &typed(9), &mut rng);
     let low = Spec::new(Base::Wiener, 2);
-    check::<2>(&low, &WienerNoise::new(2), &mut rng);
-    check::<3>(&low, &WienerNoise::new(2), &mut rng);
+    same_bits::<2, _>(&low, &WienerNoise::new(2), &mut rng);
+    same_bits::<3, _>(&low, &WienerNoise::new(2), &mut rng);
     assert_eq!(low.to_string(), "wiener seed=2 covariance=low-pass");
     let e = "perlin covariance=band-pass".parse::<Spec>().unwrap_err();
     assert_eq!(e.refused(), Some(Error::NotWiener("perlin")));
