@@ -238,10 +238,14 @@ const _: () = {
     }
 };
 
+/// `σ = √(σ_η² ∫h²)` of `covariance` in `d` dimensions, at compile time.
+const fn sigma(covariance: Covariance, d: usize) -> f64 {
+    constmath::sqrt(VALUE_VARIANCE * covariance.power(d))
+}
+
 /// `1/σ` of `covariance` in `d` dimensions as `f32` and I16F16 (nearest), at compile time.
 const fn scales(covariance: Covariance, d: usize) -> (f32, I16F16) {
-    let sigma = constmath::sqrt(VALUE_VARIANCE * covariance.power(d));
-    let scale = (1.0 / sigma) as f32;
+    let scale = (1.0 / sigma(covariance, d)) as f32;
     (scale, fixed_of(scale))
 }
 
@@ -365,11 +369,11 @@ impl<const D: usize> WienerNoise<D> {
     /// which the noise divides by.
     #[must_use]
     pub fn sigma(&self) -> f64 {
-        Self::sigma_of(self.covariance)
-    }
-
-    fn sigma_of(covariance: Covariance) -> f64 {
-        libm::sqrt(VALUE_VARIANCE * covariance.power(D))
+        // At compile time, as the scale is: no quadrature per call.
+        match self.covariance {
+            Covariance::LowPass => const { sigma(Covariance::LowPass, D) },
+            Covariance::BandPass => const { sigma(Covariance::BandPass, D) },
+        }
     }
 
     /// The bound on `|sample(p)|` in every number type (see [Amplitude](Self#amplitude)).
