@@ -73,6 +73,24 @@ pub enum Error {
         /// The largest count allowed.
         max: u32,
     },
+    /// A Gabor bandwidth `a` that is not finite or not in `[1/256, 256]` (see
+    /// [`Gabor`](crate::impulse::Gabor)).
+    Bandwidth(f32),
+    /// A Gabor frequency `F₀` that is not finite, negative, or above `max_ratio` times the
+    /// bandwidth (see [`Gabor`](crate::impulse::Gabor)).
+    Frequency {
+        /// The frequency given.
+        frequency: f32,
+        /// The bandwidth it was checked against.
+        bandwidth: f32,
+        /// The largest ratio of frequency to bandwidth.
+        max_ratio: f32,
+    },
+    /// A Gabor direction with a component that is not finite, or of length 0 (see
+    /// [`Gabor`](crate::impulse::Gabor)).
+    Direction,
+    /// A Gabor magnitude `K` that is not finite or beyond ±1024.
+    Magnitude(f32),
     /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
     ///
     /// [`Spec::build`]: crate::spec::Spec::build
@@ -102,6 +120,9 @@ pub enum Error {
     NotImpulse(&'static str),
     /// A covariance asked for a noise that is not Wiener-interpolated.
     NotWiener(&'static str),
+    /// A Gabor setting (frequency, bandwidth, direction, orientation, envelope, magnitude)
+    /// asked for another noise.
+    NotGabor(&'static str),
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -169,6 +190,30 @@ impl fmt::Display for Error {
             Error::ImpulseCount { count, max } => {
                 write!(f, "{count} impulses per cell given, 1..={max} are allowed")
             }
+            Error::Bandwidth(a) => write!(
+                f,
+                "Gabor bandwidth {} must be finite and in [1/256, 256]",
+                Shortest(*a)
+            ),
+            Error::Frequency {
+                frequency,
+                bandwidth,
+                max_ratio,
+            } => write!(
+                f,
+                "Gabor frequency {} must be finite and in [0, {} × bandwidth {}]",
+                Shortest(*frequency),
+                Shortest(*max_ratio),
+                Shortest(*bandwidth)
+            ),
+            Error::Direction => {
+                f.write_str("Gabor direction must have finite components and a length above 0")
+            }
+            Error::Magnitude(k) => write!(
+                f,
+                "Gabor magnitude {} must be finite and within ±1024",
+                Shortest(*k)
+            ),
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")
             }
@@ -193,6 +238,11 @@ impl fmt::Display for Error {
             Error::NotWiener(noise) => write!(
                 f,
                 "{noise} noise has no covariance (covariance is for Wiener noise)"
+            ),
+            Error::NotGabor(noise) => write!(
+                f,
+                "{noise} noise has no Gabor settings (frequency, bandwidth, direction, \
+                 orientation, envelope and magnitude are for Gabor noise)"
             ),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")

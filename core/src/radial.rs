@@ -14,7 +14,7 @@
 //! errors of each table are stated where its function is documented, and tested.
 
 use crate::Real;
-use crate::special::{hermite, q30};
+use crate::special::{exp_neg_f64, hermite, q30};
 use crate::wavelet::constmath;
 
 /// One in Q2.30.
@@ -31,7 +31,18 @@ pub(crate) enum Profile {
     Wendland,
     /// The band-pass covariance of Wiener noise in this many dimensions, support 2.
     BandPass(usize),
+    /// Gabor noise's Gaussian envelope `e^{−c s}` cut at `s = 1` (`c = ln 20`: 5% of its
+    /// peak at the rim, Lagae et al. 2009), support 1. Not continuous at the rim: its value
+    /// there is the limit from inside.
+    Gaussian,
+    /// The same Gaussian times Hann's window in `s`, `½ + ½ cos(π s)`: 0 with a zero slope at
+    /// the rim (`C¹`), support 1.
+    GaussianHann,
 }
+
+/// The Gaussian envelope's rate in cell units: `ln 20`, so the envelope is 5% of its peak at
+/// the cell's (the kernel's) radius (Lagae et al. 2009's truncation).
+pub(crate) const GAUSSIAN_RATE: f64 = 2.995_732_273_553_991;
 
 impl Profile {
     /// The same function in `d` dimensions (only the band-pass covariance depends on it).
@@ -53,6 +64,14 @@ impl Profile {
     /// The function at squared distance `s` and its derivative with respect to `s`, in `f64`,
     /// from its formula; both 0 from `s = S` on.
     pub(crate) const fn exact(self, s: f64) -> (f64, f64) {
+        if let Profile::Gaussian = self {
+            // The limit from inside at the rim, where the function jumps to 0.
+            if s > 1.0 {
+                return (0.0, 0.0);
+            }
+            let e = exp_neg_f64(GAUSSIAN_RATE * if s > 0.0 { s } else { 0.0 });
+            return (e, -GAUSSIAN_RATE * e);
+        }
         if s >= (1u32 << self.support_shift()) as f64 {
             return (0.0, 0.0);
         }
@@ -61,6 +80,15 @@ impl Profile {
             Profile::CatmullRom => catmull_rom(s),
             Profile::Wendland => wendland(s),
             Profile::BandPass(d) => band_pass(s, d, band_pass_a1_of(d)),
+            Profile::Gaussian => (0.0, 0.0),
+            Profile::GaussianHann => {
+                let s = if s > 0.0 { s } else { 0.0 };
+                let e = exp_neg_f64(GAUSSIAN_RATE * s);
+                // ½ + ½ cos(π s) is Lewis's cosine at s², whose slope in s is 2s times its
+                // slope there.
+                let (w, dw) = cosine(s * s);
+                product((e, -GAUSSIAN_RATE * e), (w, 2.0 * s * dw))
+            }
         }
     }
 

@@ -2,6 +2,7 @@
 //! can be replayed from the environment, an enum over every lattice noise so a test can loop over
 //! all of them, and small statistics.
 
+pub mod agree;
 pub mod spectral;
 
 use bandnoise::Error;

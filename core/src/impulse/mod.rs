@@ -30,9 +30,11 @@
 //! so a value is the same on every target, and fixed point cannot overflow whatever the
 //! coordinate.
 
+mod gabor;
 mod kernel;
 mod sparse;
 
+pub use gabor::{Envelope, Gabor, Orientation, RADIUS_TIMES_BANDWIDTH};
 pub use kernel::Kernel;
 pub use sparse::SparseConvolution;
 
@@ -203,6 +205,9 @@ impl Impulses {
     }
 }
 
+/// The walks' `(extra, prepare)` for kernels without random parameters of their own.
+pub(crate) const NO_PARAMS: (u32, fn(&mut CellRng)) = (0, |_| ());
+
 /// Bits of an impulse's position draw per axis in `D` dimensions (at most 31 in all: the top
 /// bit is the sign of [`Weights::Sign`]).
 const fn position_bits(d: usize) -> u32 {
@@ -239,21 +244,22 @@ impl Weights {
     }
 }
 
-/// Calls `visit(delta, d², w, rng)` for each impulse within distance 1 of `p` (in cell units),
-/// in a fixed order: the walk of the module docs. `visit` gets the offset from the impulse to
-/// `p`, its squared length (below 1), the weight, and a generator from which it may take
-/// `extra` draws.
+/// Calls `visit(delta, d², w, params)` for each impulse within distance 1 of `p` (in cell
+/// units), in a fixed order: the walk of the module docs. `visit` gets the offset from the
+/// impulse to `p`, its squared length (below 1), the weight, and what `prepare` made of the
+/// impulse's `extra` draws (a kernel's own random parameters: Gabor noise's phase and
+/// orientation), which `prepare` takes from the generator it is given.
 ///
 /// The `3^D` cells are visited by [`CellHash::near`]: an odometer over the axes, the first
 /// axis slowest, so the cell hash's chain (first axis folded first) shares its prefixes, and a
 /// prefix of axes whose distances alone reach 1 skips all the cells beyond it at once.
 #[inline]
-pub(crate) fn walk<R: Real, const D: usize>(
+pub(crate) fn walk<R: Real, const D: usize, P>(
     hash: &CellHash,
     impulses: &Impulses,
     p: [R; D],
-    extra: u32,
-    mut visit: impl FnMut([R; D], R, R, &mut CellRng),
+    (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
+    mut visit: impl FnMut([R; D], R, R, &P),
 ) {
     // Per axis and offset −1, 0, 1: the cell, the point's coordinate relative to the cell's
     // corner, and the squared distance from the point to the cell.
@@ -288,13 +294,14 @@ pub(crate) fn walk<R: Real, const D: usize>(
             let w = impulses.weights.draw(draw, &mut rng);
             let mut own = rng.clone();
             rng.skip(extra);
-            visit(delta, d2, w, &mut own);
+            visit(delta, d2, w, &prepare(&mut own));
         }
     });
 }
 
 /// [`walk`] for [`LANES`] points at once, each visit bit-identical to the point walk's for
-/// that lane and in the same order: `visit(lane, delta, d², w, rng)`. The cells within reach of
+/// that lane and in the same order: `visit(lane, delta, d², w, params)`, an impulse's
+/// `params` prepared once for all the lanes it reaches. The cells within reach of
 /// any lane are visited once for all of them (their impulses generated once), in the point
 /// walk's order (first axis slowest), which restricted to each lane's `3^D` cells is that
 /// lane's own order; each lane keeps the cells and impulses the point walk keeps (the same
@@ -303,12 +310,12 @@ pub(crate) fn walk<R: Real, const D: usize>(
 /// Returns `false`, visiting nothing, when the lanes' cells span more than two cells along an
 /// axis (scattered points): the caller then walks each lane alone.
 #[inline]
-pub(crate) fn walk_lanes<R: Real, const D: usize>(
+pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
     hash: &CellHash,
     impulses: &Impulses,
     p: &[[R; LANES]; D],
-    extra: u32,
-    mut visit: impl FnMut(usize, [R; D], R, R, &mut CellRng),
+    (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
+    mut visit: impl FnMut(usize, [R; D], R, R, &P),
 ) -> bool {
     // The box of cells: one below the lowest lane's to one above the highest's, at most 4
     // along an axis. Per axis and box cell, for every lane: the lane's coordinate relative to
@@ -400,11 +407,12 @@ pub(crate) fn walk_lanes<R: Real, const D: usize>(
                     continue;
                 }
                 let w = impulses.weights.draw(draw, &mut own);
+                let params = prepare(&mut own);
                 while near != 0 {
                     let l = near.trailing_zeros() as usize;
                     near &= near - 1;
                     let delta = core::array::from_fn(|a| here[a][rows[a]][l % LANES] - u[a]);
-                    visit(l, delta, d2[l % LANES], w, &mut own.clone());
+                    visit(l, delta, d2[l % LANES], w, &params);
                 }
             }
         }
@@ -445,7 +453,9 @@ mod tests {
             // One impulse per cell: collect each visited cell's first draw through the kernel's
             // delta (the impulse's position identifies the draw).
             let mut seen = std::vec::Vec::new();
-            walk(&hash, &impulses, p, 0, |delta, _, _, _| seen.push(delta));
+            walk(&hash, &impulses, p, NO_PARAMS, |delta, _, _, _| {
+                seen.push(delta)
+            });
             let mut want = std::vec::Vec::new();
             for n in 0..27 {
                 let o = [n / 9, n / 3 % 3, n % 3].map(|d: i32| d - 1);

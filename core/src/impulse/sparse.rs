@@ -14,7 +14,7 @@
 //! root, so it has variance 1 and mean 0 (the weights have mean 0) at every density.
 
 use super::kernel::Kernel;
-use super::{Impulses, Weights, walk, walk_lanes};
+use super::{Impulses, NO_PARAMS, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
 use crate::hash::CellHash;
 use crate::radial::ball_volume;
@@ -197,7 +197,7 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
     fn sample(&self, p: [R; D]) -> R {
         let kernel = self.kernel;
         let mut total = R::ZERO;
-        walk(&self.hash, &self.impulses, p, 0, |_, d2, w, _| {
+        walk(&self.hash, &self.impulses, p, NO_PARAMS, |_, d2, w, _| {
             total = total + w.mul_rn(kernel.at(d2));
         });
         total
@@ -215,11 +215,17 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
     fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
         let kernel = self.kernel;
         let mut totals = [R::ZERO; LANES];
-        let shared = walk_lanes(&self.hash, &self.impulses, p, 0, |l, _, d2, w, _| {
-            if let Some(t) = totals.get_mut(l) {
-                *t = *t + w.mul_rn(kernel.at(d2));
-            }
-        });
+        let shared = walk_lanes(
+            &self.hash,
+            &self.impulses,
+            p,
+            NO_PARAMS,
+            |l, _, d2, w, _| {
+                if let Some(t) = totals.get_mut(l) {
+                    *t = *t + w.mul_rn(kernel.at(d2));
+                }
+            },
+        );
         if shared {
             let scale = R::from_setting(self.scale, self.scale_fixed);
             for (o, t) in out.iter_mut().zip(totals) {
@@ -241,14 +247,20 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for SparseConvolution<D> {
         let kernel = self.kernel;
         let mut total = R::ZERO;
         let mut gradient = [R::ZERO; D];
-        walk(&self.hash, &self.impulses, p, 0, |delta, d2, w, _| {
-            let (h, slope) = kernel.at_with_slope(d2);
-            total = total + w.mul_rn(h);
-            let ws = w.mul_rn(slope);
-            for (g, d) in gradient.iter_mut().zip(delta) {
-                *g = g.saturating_add((ws + ws).mul_rn(d));
-            }
-        });
+        walk(
+            &self.hash,
+            &self.impulses,
+            p,
+            NO_PARAMS,
+            |delta, d2, w, _| {
+                let (h, slope) = kernel.at_with_slope(d2);
+                total = total + w.mul_rn(h);
+                let ws = w.mul_rn(slope);
+                for (g, d) in gradient.iter_mut().zip(delta) {
+                    *g = g.saturating_add((ws + ws).mul_rn(d));
+                }
+            },
+        );
         let scale = R::from_setting(self.scale, self.scale_fixed);
         (
             total.mul_rn(scale).canonical(),

@@ -1,0 +1,690 @@
+//! Gabor noise (Lagae, Lefebvre, Drettakis and Dutré 2009, "Procedural Noise using Sparse
+//! Gabor Convolution"; the survey, Lagae et al. 2010, §3.3, eqs. 7–9), in its random-phase
+//! form (Lagae and Drettakis 2011, "Filtering Solid Gabor Noise", §3.3, as OpenShadingLanguage
+//! implements it):
+//!
+//! ```text
+//! g(x) = K e^{−π a² |x|²} cos(2π F₀ ω·x + φ)          N(x) = Σ_i w_i g_i(x − x_i)
+//! ```
+//!
+//! a Gaussian envelope of inverse width `a` (the bandwidth) times a harmonic of frequency `F₀`
+//! along the unit direction `ω`, with a random phase `φ` per impulse, summed over the random
+//! impulses `x_i` of the [impulse walk](super) (sparse convolution with a Gabor kernel). Its
+//! power spectrum is the kernel's: two Gaussian lobes of width `a` at `±F₀ ω` (eq. 8), so the
+//! three parameters place the noise's energy where the user wants it: principal frequency,
+//! orientation and bandwidth.
+//!
+//! # Variants
+//!
+//! * [`Orientation::Anisotropic`]: every impulse has the noise's direction (the survey's
+//!   anisotropic noise: two lobes).
+//! * [`Orientation::Isotropic`]: each impulse draws its own direction, uniform on the circle
+//!   (2D) or the sphere (3D): the spectrum is a ring (2D) or a shell (3D) of radius `F₀`.
+//! * [`Orientation::Hybrid`] (OpenShadingLanguage's): each impulse's direction is uniform in
+//!   the xy plane: isotropic within every plane `z = const` of 3D noise, unchanging along z
+//!   (in 1D and 2D it is the isotropic variant).
+//!
+//! # Envelope and truncation
+//!
+//! The Gaussian is cut where it falls to 5% of its peak, at `r = √(ln 20 / π) / a` (Lagae et
+//! al. 2009's "kernel radius"); cells are `r` wide, so the `3^D` cells around a point hold
+//! every impulse in reach. [`Envelope::Truncated`] is that kernel, which jumps by 5% of its
+//! peak at `r`: the noise has small discontinuities (the paper's). [`Envelope::Hann`] (the
+//! default) multiplies the Gaussian by Hann's window in `d² = |x|²/r²`, `½ + ½ cos(π d²)`, as
+//! Blender's Gabor texture does: the kernel and the noise are `C¹`, at the price of a slightly
+//! narrower envelope, so lobes somewhat wider than `a` (measured in `tests/tests/gabor.rs`).
+//! Both envelopes are read from a table of `d²` ([`crate::radial`]), the harmonic from
+//! [`Real::cos_turns`].
+//!
+//! # Normalisation
+//!
+//! With random phases `E[cos²] = ½` whatever `F₀` and `ω`, so Campbell's theorem gives the
+//! variance in closed form, `Var N = λ E[w²] · ½ ∫ e(x)² dx` (`λ` impulses per unit volume,
+//! `e` the envelope; the integral is computed at compile time for each envelope), and the noise
+//! is scaled by `K / √Var`: variance `K²`, mean 0, for every frequency, bandwidth, orientation,
+//! density and dimension (the 2009 paper's `(1 + e^{−2πF₀²/a²})` interference term of a
+//! phase-free kernel does not arise).
+//!
+//! Random numbers per impulse, after the walk's position draw (and uniform weight): one 32-bit
+//! draw whose top 16 bits give the phase and whose low 16 bits the angle of an isotropic or
+//! hybrid direction (bin centres `(2k + 1)/2¹⁷` turns: exact in every number type), and in 3D
+//! isotropic noise a second draw whose top 16 bits give the direction's `z` (uniform in
+//! `(−1, 1)`, which makes the direction uniform on the sphere, Archimedes).
+
+use super::{Impulses, Weights, walk, walk_lanes};
+use crate::batch::{self, LANES};
+use crate::hash::{CellHash, CellRng};
+use crate::radial::{GAUSSIAN_RATE, Profile, Table, ball_volume, knots, power_in, powers};
+use crate::wavelet::constmath;
+use crate::{Error, I16F16, Noise, NoiseGradient, Real};
+
+/// How the impulses' kernels are oriented (module docs, "Variants").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Orientation {
+    /// Every kernel along the noise's direction: two spectral lobes at `±F₀ ω`.
+    #[default]
+    Anisotropic,
+    /// Each kernel along a direction of its own, uniform on the circle or sphere: a ring or
+    /// shell of radius `F₀`.
+    Isotropic,
+    /// Each kernel along a direction of its own, uniform in the xy plane
+    /// (OpenShadingLanguage's hybrid noise; the same as isotropic in 1D and 2D).
+    Hybrid,
+}
+
+/// The kernel's envelope (module docs, "Envelope and truncation").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Envelope {
+    /// The Gaussian times Hann's window in `d²`: `C¹`, 0 at the kernel's radius.
+    #[default]
+    Hann,
+    /// The Gaussian cut at 5% of its peak (Lagae et al. 2009): a jump of 5% at the radius.
+    Truncated,
+}
+
+impl Envelope {
+    /// The envelope as a radial profile.
+    const fn profile(self) -> Profile {
+        match self {
+            Envelope::Hann => Profile::GaussianHann,
+            Envelope::Truncated => Profile::Gaussian,
+        }
+    }
+
+    /// The envelope at squared distance `s` in cell units (kernel radii) and its derivative
+    /// in `s`, in `f64`, from its formula: what the tables hold, and what tests compare with.
+    #[must_use]
+    pub const fn exact(self, s: f64) -> (f64, f64) {
+        self.profile().exact(s)
+    }
+
+    /// The table of the envelope.
+    fn table(self) -> &'static Table {
+        match self {
+            Envelope::Hann => &HANN,
+            Envelope::Truncated => &GAUSSIAN,
+        }
+    }
+
+    /// `∫ e(|x|)² dx` over the unit ball in `d` dimensions (1 to 3), from a table built at
+    /// compile time.
+    fn power_of(self, d: usize) -> f64 {
+        const HANN_POWERS: [f64; 4] = powers(Profile::GaussianHann);
+        const GAUSSIAN_POWERS: [f64; 4] = powers(Profile::Gaussian);
+        match self {
+            Envelope::Hann => power_in(&HANN_POWERS, d),
+            Envelope::Truncated => power_in(&GAUSSIAN_POWERS, d),
+        }
+    }
+}
+
+/// The envelopes' tables: 65 knots, `Δ = 1/64` (errors below 3e-7: `tests` in this module).
+static HANN: Table = Table::new(Profile::GaussianHann, &HANN_KNOTS);
+static HANN_KNOTS: [[i32; 2]; 65] = knots(Profile::GaussianHann);
+static GAUSSIAN: Table = Table::new(Profile::Gaussian, &GAUSSIAN_KNOTS);
+static GAUSSIAN_KNOTS: [[i32; 2]; 65] = knots(Profile::Gaussian);
+
+/// The kernel's radius times `a`: `√(ln 20 / π)`, where the Gaussian is 5% of its peak.
+pub const RADIUS_TIMES_BANDWIDTH: f64 = constmath::sqrt(GAUSSIAN_RATE / core::f64::consts::PI);
+
+/// A setting in floats and in fixed point, rounded once from `f64`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Setting {
+    float: f32,
+    fixed: I16F16,
+}
+
+impl Setting {
+    fn of(v: f64) -> Self {
+        Self {
+            float: v as f32,
+            fixed: I16F16::from_f32(v as f32),
+        }
+    }
+
+    #[inline]
+    fn get<R: Real>(self) -> R {
+        R::from_setting(self.float, self.fixed)
+    }
+}
+
+/// An impulse's own random parameters, in cell units: its harmonic's wave vector (turns per
+/// kernel radius along each axis) and its phase (turns).
+struct Params<R, const D: usize> {
+    wave: [R; D],
+    phase: R,
+}
+
+/// Gabor noise in `D` dimensions (1 to 3): see the [module docs](self).
+///
+/// Coordinates are in the user's units: the frequency `F₀` is in cycles per unit, the
+/// bandwidth `a` in the same units' inverse (the envelope is `e^{−π a² |x|²}`). The defaults
+/// are `F₀ = 1`, `a = 0.8` (the ratio of Lagae et al.'s example, `F₀ = 0.0625`, `a = 0.05`),
+/// the anisotropic variant along the x axis, the `C¹` [`Envelope::Hann`], 16 impulses per
+/// kernel volume (OpenShadingLanguage's default) with Poisson counts and ±1 weights, and
+/// magnitude `K = 1` (variance 1).
+///
+/// # Amplitude
+///
+/// Variance `K²` and mean 0 (module docs, "Normalisation"). Each of the `3^D` cells holds at
+/// most [`Impulses::cap`] impulses of weight at most 1, and a kernel is at most 1, so
+/// `|N| ≤ 3^D · cap · |K| / σ` ([`amplitude_bound`](Noise::amplitude_bound)): a proved
+/// bound, far above what occurs.
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Error, I16F16, Noise, impulse::{Gabor, Orientation}};
+///
+/// // Stripes at 45°, two cycles per unit, fairly narrow-band.
+/// let stripes = Gabor::<2>::new(7)
+///     .with_frequency(2.0)?
+///     .with_bandwidth(0.5)?
+///     .with_angle(core::f32::consts::FRAC_PI_4)?;
+/// let v: f32 = stripes.sample([0.5, 1.25]);
+/// assert!(v.abs() <= stripes.amplitude_bound());
+///
+/// // Isotropic solid noise, in fixed point too.
+/// let solid = Gabor::<3>::new(7).with_orientation(Orientation::Isotropic);
+/// let p = [0.5f32, 1.25, -2.0];
+/// let q: I16F16 = solid.sample(p.map(I16F16::from_num));
+/// assert!((q.to_num::<f32>() - solid.sample(p)).abs() < 2e-3);
+/// # Ok::<(), Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Gabor<const D: usize> {
+    hash: CellHash,
+    impulses: Impulses,
+    orientation: Orientation,
+    envelope: Envelope,
+    magnitude: f32,
+    frequency: f32,
+    bandwidth: f32,
+    /// The unit direction of the anisotropic variant.
+    direction: [f32; D],
+    /// `1/r`: coordinates times this are in cell units.
+    to_cells: Setting,
+    /// `F₀ r`: the harmonic's turns per kernel radius.
+    turns: Setting,
+    /// `F₀ r ω`: the anisotropic wave vector in turns per kernel radius.
+    wave: [Setting; D],
+    /// `K/σ`.
+    scale: Setting,
+}
+
+impl<const D: usize> Gabor<D> {
+    /// The default frequency `F₀`, cycles per unit.
+    pub const DEFAULT_FREQUENCY: f32 = 1.0;
+    /// The default bandwidth `a`.
+    pub const DEFAULT_BANDWIDTH: f32 = 0.8;
+    /// The default density, impulses per kernel volume.
+    pub const DEFAULT_DENSITY: f32 = 16.0;
+    /// The smallest bandwidth (a kernel 250 units wide).
+    pub const MIN_BANDWIDTH: f32 = 1.0 / 256.0;
+    /// The largest bandwidth (a kernel 1/260 unit wide).
+    pub const MAX_BANDWIDTH: f32 = 256.0;
+    /// The largest ratio `F₀ / a` (62 cycles within a kernel's radius: a nearly pure tone).
+    pub const MAX_FREQUENCY_RATIO: f32 = 64.0;
+    /// The largest magnitude `K`.
+    pub const MAX_MAGNITUDE: f32 = 1024.0;
+
+    /// The noise for `seed`, with the defaults above.
+    #[must_use]
+    pub fn new(seed: u32) -> Self {
+        const { assert!(D >= 1 && D <= 3, "Gabor noise has 1 to 3 dimensions") };
+        let direction = core::array::from_fn(|a| if a == 0 { 1.0 } else { 0.0 });
+        Self {
+            hash: CellHash::new(seed),
+            impulses: Impulses::poisson_checked(
+                Self::per_cell(Self::DEFAULT_DENSITY),
+                Weights::Sign,
+            ),
+            orientation: Orientation::Anisotropic,
+            envelope: Envelope::Hann,
+            magnitude: 1.0,
+            frequency: Self::DEFAULT_FREQUENCY,
+            bandwidth: Self::DEFAULT_BANDWIDTH,
+            direction,
+            to_cells: Setting::default(),
+            turns: Setting::default(),
+            wave: [Setting::default(); D],
+            scale: Setting::default(),
+        }
+        .derive()
+    }
+
+    /// Computes the derived settings from the parameters.
+    fn derive(mut self) -> Self {
+        let radius = RADIUS_TIMES_BANDWIDTH / self.bandwidth as f64;
+        let turns = self.frequency as f64 * radius;
+        self.to_cells = Setting::of(1.0 / radius);
+        self.turns = Setting::of(turns);
+        self.wave = core::array::from_fn(|a| Setting::of(turns * self.direction[a] as f64));
+        self.scale = Setting::of(self.magnitude as f64 / self.sigma());
+        self
+    }
+
+    /// The mean count per cell (of volume 1 in kernel radii) for `density` per kernel volume.
+    fn per_cell(density: f32) -> f32 {
+        (density as f64 / ball_volume(D)) as f32
+    }
+
+    /// The largest density in `D` dimensions: 32 impulses per cell on average, `32 · V_D` per
+    /// kernel volume (64 in 1D, 100.5 in 2D, 134 in 3D).
+    #[must_use]
+    pub fn max_density() -> f32 {
+        (32.0 * ball_volume(D)) as f32
+    }
+
+    /// The same noise at frequency `F₀` cycles per unit.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Frequency`] unless `0 ≤ F₀ ≤ MAX_FREQUENCY_RATIO · a` (set the bandwidth first
+    /// when raising the frequency far).
+    pub fn with_frequency(mut self, frequency: f32) -> Result<Self, Error> {
+        let max = Self::MAX_FREQUENCY_RATIO * self.bandwidth;
+        if !(0.0..=max).contains(&frequency) {
+            return Err(Error::Frequency {
+                frequency,
+                bandwidth: self.bandwidth,
+                max_ratio: Self::MAX_FREQUENCY_RATIO,
+            });
+        }
+        self.frequency = frequency;
+        Ok(self.derive())
+    }
+
+    /// The same noise with bandwidth `a` (the envelope `e^{−π a² |x|²}`; lobes of that width
+    /// in frequency).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Bandwidth`] unless `a` is in `[MIN_BANDWIDTH, MAX_BANDWIDTH]`;
+    /// [`Error::Frequency`] if the frequency would exceed `MAX_FREQUENCY_RATIO · a`.
+    pub fn with_bandwidth(mut self, bandwidth: f32) -> Result<Self, Error> {
+        if !(Self::MIN_BANDWIDTH..=Self::MAX_BANDWIDTH).contains(&bandwidth) {
+            return Err(Error::Bandwidth(bandwidth));
+        }
+        if self.frequency > Self::MAX_FREQUENCY_RATIO * bandwidth {
+            return Err(Error::Frequency {
+                frequency: self.frequency,
+                bandwidth,
+                max_ratio: Self::MAX_FREQUENCY_RATIO,
+            });
+        }
+        self.bandwidth = bandwidth;
+        Ok(self.derive())
+    }
+
+    /// The same noise with the anisotropic direction `direction` (any finite non-zero vector;
+    /// it is normalised).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Direction`] if a component is not finite or the vector is zero (or too small
+    /// to normalise).
+    pub fn with_direction(mut self, direction: [f32; D]) -> Result<Self, Error> {
+        let length = libm::sqrt(direction.iter().map(|&c| c as f64 * c as f64).sum::<f64>());
+        // Finite components give a finite length; NaN fails the range test.
+        if !direction.iter().all(|c| c.is_finite()) || !(1e-30..).contains(&length) {
+            return Err(Error::Direction);
+        }
+        self.direction = direction.map(|c| (c as f64 / length) as f32);
+        Ok(self.derive())
+    }
+
+    /// The same noise with the anisotropic direction at `angle` radians from the x axis
+    /// towards y (the paper's `ω₀`); in 3D, in the xy plane. In 1D only the direction's sign
+    /// along x counts.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Direction`] if `angle` is not finite (or, in 1D, at right angles to x).
+    pub fn with_angle(self, angle: f32) -> Result<Self, Error> {
+        if !angle.is_finite() {
+            return Err(Error::Direction);
+        }
+        let (s, c) = (
+            libm::sin(angle as f64) as f32,
+            libm::cos(angle as f64) as f32,
+        );
+        self.with_direction(core::array::from_fn(|a| match a {
+            0 => c,
+            1 => s,
+            _ => 0.0,
+        }))
+    }
+
+    /// The same noise with kernels oriented as `orientation` says.
+    #[must_use]
+    pub fn with_orientation(mut self, orientation: Orientation) -> Self {
+        self.orientation = orientation;
+        self
+    }
+
+    /// The same noise with the envelope `envelope`.
+    #[must_use]
+    pub fn with_envelope(self, envelope: Envelope) -> Self {
+        Self { envelope, ..self }.derive()
+    }
+
+    /// The same noise with magnitude `K` (its standard deviation; negative flips the sign).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Magnitude`] unless `|K| ≤ MAX_MAGNITUDE`.
+    pub fn with_magnitude(self, magnitude: f32) -> Result<Self, Error> {
+        if !(-Self::MAX_MAGNITUDE..=Self::MAX_MAGNITUDE).contains(&magnitude) {
+            return Err(Error::Magnitude(magnitude));
+        }
+        Ok(Self { magnitude, ..self }.derive())
+    }
+
+    /// The same noise with `density` impulses per kernel volume on average (Poisson counts),
+    /// keeping the weights. More is closer to Gaussian and slower (the cost is about
+    /// proportional).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Density`] unless `density` is in `[MIN_DENSITY, max_density()]`.
+    pub fn with_density(self, density: f32) -> Result<Self, Error> {
+        let max = Self::max_density();
+        if !(super::MIN_DENSITY..=max).contains(&density) {
+            return Err(Error::Density {
+                density,
+                min: super::MIN_DENSITY,
+                max,
+            });
+        }
+        let impulses = Impulses::poisson_checked(Self::per_cell(density), self.impulses.weights());
+        Ok(Self { impulses, ..self }.derive())
+    }
+
+    /// The same noise with exactly `per_cell` impulses in every cell, keeping the weights:
+    /// with ±1 weights, the fast normalised process of Tavernier et al. 2019 (no count to
+    /// draw; `per_cell · V_D` impulses per kernel volume).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::ImpulseCount`] unless `1 ≤ per_cell ≤` [`MAX_FIXED`](super::MAX_FIXED).
+    pub fn with_fixed_count(self, per_cell: u32) -> Result<Self, Error> {
+        let impulses = Impulses::fixed(per_cell)?.with_weights(self.impulses.weights());
+        Ok(Self { impulses, ..self }.derive())
+    }
+
+    /// The same noise with impulse weights drawn as `weights` says.
+    #[must_use]
+    pub fn with_weights(self, weights: Weights) -> Self {
+        let impulses = self.impulses.clone().with_weights(weights);
+        Self { impulses, ..self }.derive()
+    }
+
+    /// The frequency `F₀`, cycles per unit.
+    #[must_use]
+    pub fn frequency(&self) -> f32 {
+        self.frequency
+    }
+
+    /// The bandwidth `a`.
+    #[must_use]
+    pub fn bandwidth(&self) -> f32 {
+        self.bandwidth
+    }
+
+    /// The anisotropic direction (a unit vector).
+    #[must_use]
+    pub fn direction(&self) -> [f32; D] {
+        self.direction
+    }
+
+    /// The orientation variant.
+    #[must_use]
+    pub fn orientation(&self) -> Orientation {
+        self.orientation
+    }
+
+    /// The envelope.
+    #[must_use]
+    pub fn envelope(&self) -> Envelope {
+        self.envelope
+    }
+
+    /// The magnitude `K`.
+    #[must_use]
+    pub fn magnitude(&self) -> f32 {
+        self.magnitude
+    }
+
+    /// The impulses per cell.
+    #[must_use]
+    pub fn impulses(&self) -> &Impulses {
+        &self.impulses
+    }
+
+    /// The mean number of impulses per kernel volume.
+    #[must_use]
+    pub fn density(&self) -> f32 {
+        (self.impulses.per_cell() as f64 * ball_volume(D)) as f32
+    }
+
+    /// The kernel's radius `r = √(ln 20 / π) / a`, in units: the cells' width.
+    #[must_use]
+    pub fn radius(&self) -> f64 {
+        RADIUS_TIMES_BANDWIDTH / self.bandwidth as f64
+    }
+
+    /// The standard deviation of the unscaled sum in cell units, `√(λ E[w²] ½ ∫e²)`
+    /// (module docs, "Normalisation"), which the noise divides by.
+    #[must_use]
+    pub fn sigma(&self) -> f64 {
+        libm::sqrt(self.impulses.variance(self.envelope.power_of(D)) / 2.0)
+    }
+
+    /// The bound on `|sample(p)|` in every number type (see [Amplitude](Self#amplitude)).
+    #[must_use]
+    pub fn amplitude_bound(&self) -> f32 {
+        let cells = 3u32.pow(D as u32) as f64;
+        let scale = (self.scale.float.abs() as f64).max(self.scale.fixed.to_num::<f64>().abs());
+        // A little above: the roundings of the sum and of the scale.
+        (cells * self.impulses.cap() as f64 * scale * (1.0 + 1e-3) + 1e-3) as f32
+    }
+
+    /// Extra draws per impulse: the phase and an isotropic or hybrid angle share one; 3D
+    /// isotropic directions take a second for `z`.
+    fn extra(&self) -> u32 {
+        if D == 3 && self.orientation == Orientation::Isotropic {
+            2
+        } else {
+            1
+        }
+    }
+
+    /// An impulse's phase and wave vector from its extra draws.
+    #[inline]
+    fn params<R: Real>(&self, rng: &mut CellRng) -> Params<R, D> {
+        let draw = rng.next_u32();
+        // Bin centres of 2^16 bins: (2k + 1)/2^17 turns.
+        let turn = |bits: u32| R::from_ratio((2 * bits + 1) as i32, 17);
+        let phase = turn(draw >> 16);
+        if D == 1 || self.orientation == Orientation::Anisotropic {
+            return Params {
+                wave: self.wave.map(Setting::get),
+                phase,
+            };
+        }
+        let theta = turn(draw & 0xFFFF);
+        let (c, s) = (theta.cos_turns(), (theta - R::from_ratio(1, 2)).cos_turns());
+        let turns = self.turns.get::<R>();
+        // The direction's z and the length of its xy part (a plane direction: 0 and 1).
+        let (z, rho) = if D == 3 && self.orientation == Orientation::Isotropic {
+            let k = (rng.next_u32() >> 16) as i32 - (1 << 15);
+            let z = R::from_ratio(2 * k + 1, 16);
+            (z, (R::ONE - z.mul_rn(z)).sqrt())
+        } else {
+            (R::ZERO, R::ONE)
+        };
+        let wave = core::array::from_fn(|a| match a {
+            0 => turns.mul_rn(rho.mul_rn(c)),
+            1 => turns.mul_rn(rho.mul_rn(s)),
+            _ => turns.mul_rn(z),
+        });
+        Params { wave, phase }
+    }
+
+    /// The point in cell units.
+    #[inline]
+    fn to_cells<R: Real>(&self, p: [R; D]) -> [R; D] {
+        let k = self.to_cells.get::<R>();
+        p.map(|x| x.wrapping_mul(k))
+    }
+}
+
+/// The harmonic's argument in turns, `wave · delta + phase`.
+#[inline]
+fn argument<R: Real, const D: usize>(params: &Params<R, D>, delta: &[R; D]) -> R {
+    let mut t = params.phase;
+    for (k, d) in params.wave.iter().zip(delta) {
+        t = t + k.mul_rn(*d);
+    }
+    t
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for Gabor<D> {
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        let table = self.envelope.table();
+        let mut total = R::ZERO;
+        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
+        let p = self.to_cells(p);
+        walk(
+            &self.hash,
+            &self.impulses,
+            p,
+            (self.extra(), prepare),
+            |delta, d2, w, params| {
+                let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
+                total = total + w.mul_rn(h);
+            },
+        );
+        total.mul_rn(self.scale.get()).canonical()
+    }
+
+    fn amplitude_bound(&self) -> f32 {
+        Gabor::amplitude_bound(self)
+    }
+
+    /// Lanes near each other (a grid's chunk) share the walk: each cell's impulses are
+    /// generated, and each impulse's phase and direction drawn, once for all of them;
+    /// scattered lanes are walked one by one. Bit-identical to [`sample`](Noise::sample)
+    /// either way.
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        let table = self.envelope.table();
+        let mut totals = [R::ZERO; LANES];
+        let k = self.to_cells.get::<R>();
+        let cells = p.map(|axis| axis.map(|x| x.wrapping_mul(k)));
+        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
+        let shared = walk_lanes(
+            &self.hash,
+            &self.impulses,
+            &cells,
+            (self.extra(), prepare),
+            |l, delta, d2, w, params| {
+                if let Some(t) = totals.get_mut(l) {
+                    let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
+                    *t = *t + w.mul_rn(h);
+                }
+            },
+        );
+        if shared {
+            let scale = self.scale.get::<R>();
+            for (o, t) in out.iter_mut().zip(totals) {
+                *o = t.mul_rn(scale).canonical();
+            }
+        } else {
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = self.sample(batch::lane(p, l));
+            }
+        }
+    }
+}
+
+/// The analytic gradient: for each impulse, `w (e′(d²) 2δ cos 2πt − e(d²) 2π k sin 2πt)` in
+/// cell units (`δ` the offset, `k` the wave vector, `t` the harmonic's argument), times `1/r`
+/// and the scale; the value is [`sample`](Noise::sample)'s bit for bit. Sums saturate in fixed
+/// point (a term reaches `2π · 64` at the largest frequency ratio).
+impl<R: Real, const D: usize> NoiseGradient<R, D> for Gabor<D> {
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        let table = self.envelope.table();
+        let mut total = R::ZERO;
+        let mut gradient = [R::ZERO; D];
+        let tau = R::from_f32(core::f32::consts::TAU);
+        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
+        let p = self.to_cells(p);
+        walk(
+            &self.hash,
+            &self.impulses,
+            p,
+            (self.extra(), prepare),
+            |delta, d2, w, params| {
+                let (e, slope) = table.at_with_slope(d2);
+                let t = argument(params, &delta);
+                let (c, s) = (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns());
+                total = total + w.mul_rn(e.mul_rn(c));
+                let radial = w.mul_rn(slope.mul_rn(c));
+                let along = w.mul_rn(e.mul_rn(s)).mul_rn(tau);
+                for ((g, d), k) in gradient.iter_mut().zip(delta).zip(&params.wave) {
+                    let term = (radial + radial).mul_rn(d) - along.saturating_mul(*k);
+                    *g = g.saturating_add(term);
+                }
+            },
+        );
+        let scale = self.scale.get::<R>();
+        let chain = scale.saturating_mul(self.to_cells.get());
+        (
+            total.mul_rn(scale).canonical(),
+            gradient.map(|g| g.saturating_mul(chain).canonical()),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The envelopes' tables against their formulas, in `f64` and `f32`.
+    #[test]
+    fn envelope_tables_follow_their_formulas() {
+        for envelope in [Envelope::Hann, Envelope::Truncated] {
+            let mut worst = [0.0f64; 2];
+            for i in 0..=10_000 {
+                let s = i as f64 / 10_000.0 * 0.9999;
+                let (want, slope) = envelope.exact(s);
+                let got = envelope.table().at(s);
+                let (_, got_slope) = envelope.table().at_with_slope(s);
+                worst[0] = worst[0].max((got - want).abs());
+                worst[1] = worst[1].max((got_slope - slope).abs());
+                let f = envelope.table().at(s as f32) as f64;
+                assert!((f - want).abs() < 1e-6, "{envelope:?} f32 at {s}");
+            }
+            assert!(
+                worst[0] < 3e-7 && worst[1] < 2e-4,
+                "{envelope:?}: {worst:?}"
+            );
+        }
+        // The truncated envelope is 5% of its peak just inside the rim, 0 from it on.
+        assert!((Envelope::Truncated.table().at(0.999_999f64) - 0.05).abs() < 1e-6);
+        assert_eq!(Envelope::Truncated.table().at(1.0f64), 0.0);
+        assert_eq!(Envelope::Hann.table().at(1.0f64), 0.0);
+    }
+
+    /// `∫e²` from the tables against the 2D closed form of the truncated Gaussian:
+    /// `π (1 − e^{−2c}) / (2c)` over the unit disc.
+    #[test]
+    fn truncated_power_is_the_closed_form() {
+        let c = GAUSSIAN_RATE;
+        let want = core::f64::consts::PI * (1.0 - libm::exp(-2.0 * c)) / (2.0 * c);
+        let got = Envelope::Truncated.power_of(2);
+        assert!((got - want).abs() < 1e-9, "{got} against {want}");
+    }
+}
