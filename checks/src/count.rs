@@ -1,7 +1,7 @@
 //! The workloads of `scripts/count-instructions.sh`: each runs [`SAMPLES`] samples of one noise
 //! between two marker calls, so QEMU's instruction trace can count what one sample costs.
 
-use bandnoise::impulse::SparseConvolution;
+use bandnoise::impulse::{Gabor, Orientation, SparseConvolution};
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
 use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
@@ -41,9 +41,10 @@ pub const OUTPUT_NAMES: [&str; 7] = [
 ];
 
 /// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
-/// density (10 impulses per kernel volume) and at 3 impulses per cell, with their own
-/// baseline. A program of its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
-pub const IMPULSE_NAMES: [&str; 10] = [
+/// density (10 impulses per kernel volume) and at 3 impulses per cell, Wiener noise, and Gabor
+/// noise at its defaults (16 impulses per kernel volume), with their own baseline. A program of
+/// its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
+pub const IMPULSE_NAMES: [&str; 14] = [
     "baseline impulse",
     "sparse 2D I16F16",
     "sparse 2D f32",
@@ -54,6 +55,10 @@ pub const IMPULSE_NAMES: [&str; 10] = [
     "wiener 2D f32",
     "wiener band-pass 2D I16F16",
     "wiener 3D I16F16",
+    "gabor 2D I16F16",
+    "gabor 2D f32",
+    "gabor 3D I16F16",
+    "gabor 2D I16F16 isotropic",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -169,5 +174,12 @@ pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
     acc ^= workload::<f32, 2>(begin, end, |q| bits(wiener.sample(q)));
     acc ^= workload::<I16F16, 2>(begin, end, |q| bits(band.sample(q)));
     acc ^= workload::<I16F16, 3>(begin, end, |q| bits(wiener3.sample(q)));
+    let gabor = Gabor::<2>::new(1);
+    let gabor3 = Gabor::<3>::new(1);
+    let isotropic = gabor.clone().with_orientation(Orientation::Isotropic);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(gabor.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(gabor.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(gabor3.sample(q)));
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(isotropic.sample(q)));
     acc
 }

@@ -14,6 +14,7 @@ pub mod led;
 
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
+use bandnoise::impulse::{Envelope, Orientation, Weights};
 use bandnoise::lattice::TabledPerlin;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
@@ -144,7 +145,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 9;
+const COMPOSED: usize = 12;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -159,6 +160,21 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let band_pass = band_pass
         .with_covariance(Covariance::BandPass)
         .unwrap_or(band_pass);
+    let gabor = |orientation, envelope, frequency| {
+        let plain = Spec::new(Base::Gabor, 5);
+        // Accepted for Gabor noise, in range.
+        plain
+            .with_orientation(orientation)
+            .and_then(|s| s.with_envelope(envelope))
+            .and_then(|s| s.with_spectrum(frequency, 0.5))
+            .unwrap_or(plain)
+    };
+    let gabor_fixed = gabor(Orientation::Hybrid, Envelope::Hann, 1.0);
+    // Accepted for Gabor noise.
+    let gabor_fixed = gabor_fixed
+        .with_fixed_count(3)
+        .and_then(|s| s.with_weights(Weights::Uniform))
+        .unwrap_or(gabor_fixed);
     let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
@@ -195,6 +211,19 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
         ),
         ("band-pass wiener 2D", band_pass, 2, 200),
         ("band-pass wiener 3D", band_pass, 3, 200),
+        (
+            "isotropic truncated gabor 2D",
+            gabor(Orientation::Isotropic, Envelope::Truncated, 3.0),
+            2,
+            200,
+        ),
+        (
+            "isotropic gabor 3D",
+            gabor(Orientation::Isotropic, Envelope::Hann, 2.0),
+            3,
+            100,
+        ),
+        ("hybrid fixed-count gabor 3D", gabor_fixed, 3, 100),
     ]
 }
 

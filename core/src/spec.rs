@@ -21,6 +21,7 @@
 //! mnoise seed=1 ridged octaves=4 lacunarity=1.99 gain=0.5
 //! sparse seed=2 kernel=catmull-rom density=3
 //! wiener seed=4 covariance=band-pass
+//! gabor seed=5 frequency=2 bandwidth=0.5 direction=1,1 orientation=anisotropic
 //! ```
 //!
 //! | setting | value | default |
@@ -31,10 +32,16 @@
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
 //! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
-//! | `density=` | impulses per kernel volume, `0.01` to the dimension's [`SparseConvolution::max_density`] (sparse noise, Poisson counts) | `10` |
-//! | `count=` | impulses in every cell, `1..=32` (sparse noise, instead of a density) | Poisson counts |
+//! | `density=` | impulses per kernel volume, `0.01` to the dimension's [`SparseConvolution::max_density`] (sparse and Gabor noise, Poisson counts) | `10` (sparse), `16` (Gabor) |
+//! | `count=` | impulses in every cell, `1..=32` (sparse and Gabor noise, instead of a density) | Poisson counts |
 //! | `kernel=` | `cosine` or `catmull-rom` (sparse noise, [`Kernel`]) | `cosine` |
-//! | `weights=` | `sign` or `uniform` (sparse noise, [`Weights`]) | `sign` |
+//! | `weights=` | `sign` or `uniform` (sparse and Gabor noise, [`Weights`]) | `sign` |
+//! | `frequency=` | Gabor's `F₀`, cycles per unit, `0` to `64 ×` the bandwidth ([`Gabor`]) | `1` |
+//! | `bandwidth=` | Gabor's `a`, `1/256` to `256` | `0.8` |
+//! | `direction=` | Gabor's anisotropic direction: 1 to 3 components, comma-separated (the rest 0); a build uses the first `D` | `1,0,0` |
+//! | `orientation=` | `anisotropic`, `isotropic` or `hybrid` (Gabor noise, [`Orientation`]) | `anisotropic` |
+//! | `envelope=` | `hann` or `truncated` (Gabor noise, [`Envelope`]) | `hann` |
+//! | `magnitude=` | Gabor's `K`, its standard deviation, within `±1024` | `1` |
 //! | `covariance=` | `low-pass` or `band-pass` (Wiener noise, [`Covariance`]) | `low-pass` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
@@ -85,7 +92,10 @@ use core::str::FromStr;
 use crate::batch::{Grid, LANES};
 use crate::decimal;
 use crate::fractal::{Fractal, Kind, Octaves};
-use crate::impulse::{self, Impulses, Kernel, SparseConvolution, Weights};
+use crate::impulse::{
+    self, Envelope, Gabor, GaborParameters, Impulses, Kernel, Orientation, SparseConvolution,
+    Weights,
+};
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
@@ -122,11 +132,13 @@ pub enum Base {
     Sparse,
     /// [`WienerNoise`]: Lewis's Wiener-interpolated noise, 1D–4D. Text: `wiener`.
     Wiener,
+    /// [`Gabor`]: Lagae et al.'s Gabor noise, 1D–3D. Text: `gabor`.
+    Gabor,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 10] = [
+    pub const ALL: [Base; 11] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -137,6 +149,7 @@ impl Base {
         Base::Multiband,
         Base::Sparse,
         Base::Wiener,
+        Base::Gabor,
     ];
 
     /// The name in the text form.
@@ -153,6 +166,7 @@ impl Base {
             Base::Multiband => "multiband",
             Base::Sparse => "sparse",
             Base::Wiener => "wiener",
+            Base::Gabor => "gabor",
         }
     }
 
@@ -161,6 +175,7 @@ impl Base {
     pub const fn has_dimension(self, dims: usize) -> bool {
         match self {
             Base::Wavelet | Base::Multiband => dims == 2 || dims == 3,
+            Base::Gabor => dims >= 1 && dims <= 3,
             _ => dims >= 1 && dims <= 4,
         }
     }
@@ -172,10 +187,11 @@ impl Base {
         !self.is_wavelet() && !self.is_impulse() && !matches!(self, Base::Wiener)
     }
 
-    /// Whether the noise is made of random impulses (and has impulse settings).
+    /// Whether the noise is made of random impulses (and has impulse settings: density,
+    /// count, weights).
     #[must_use]
     pub const fn is_impulse(self) -> bool {
-        matches!(self, Base::Sparse)
+        matches!(self, Base::Sparse | Base::Gabor)
     }
 
     /// Whether the noise reads a wavelet tile (and has a [`Tiling`]).
@@ -212,6 +228,8 @@ pub struct Spec {
     per_cell: u8,
     /// Wiener noise's covariance; the default for every other base.
     covariance: Covariance,
+    /// Gabor noise's settings; the defaults for every other base.
+    gabor: GaborParameters,
     fractal: Option<(Kind, Octaves)>,
 }
 
@@ -229,9 +247,13 @@ impl Spec {
             distribution: Distribution::Gaussian,
             kernel: Kernel::Cosine,
             weights: Weights::Sign,
-            density: impulse::DEFAULT_DENSITY,
+            density: match base {
+                Base::Gabor => Gabor::<1>::DEFAULT_DENSITY,
+                _ => impulse::DEFAULT_DENSITY,
+            },
             per_cell: 0,
             covariance: Covariance::LowPass,
+            gabor: GaborParameters::DEFAULT,
             fractal: None,
         }
     }
@@ -312,12 +334,12 @@ impl Spec {
         Ok(self)
     }
 
-    /// Sparse convolution noise with `density` impulses per kernel volume (Poisson counts),
-    /// replacing a fixed count.
+    /// Sparse convolution or Gabor noise with `density` impulses per kernel volume (Poisson
+    /// counts), replacing a fixed count.
     ///
     /// # Errors
     ///
-    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`]; [`Error::Density`] unless
+    /// [`Error::NotImpulse`] unless the base is made of impulses; [`Error::Density`] unless
     /// `density` is finite and in `[0.01, 32·π²/2]` (the largest 4D density; building checks
     /// the dimension's own, [`SparseConvolution::max_density`]).
     pub fn with_density(mut self, density: f32) -> Result<Self, Error> {
@@ -335,11 +357,11 @@ impl Spec {
         Ok(self)
     }
 
-    /// Sparse convolution noise with exactly `per_cell` impulses in every cell.
+    /// Sparse convolution or Gabor noise with exactly `per_cell` impulses in every cell.
     ///
     /// # Errors
     ///
-    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`]; [`Error::ImpulseCount`]
+    /// [`Error::NotImpulse`] unless the base is made of impulses; [`Error::ImpulseCount`]
     /// unless `1 ≤ per_cell ≤` [`MAX_FIXED`](impulse::MAX_FIXED).
     pub fn with_fixed_count(mut self, per_cell: u32) -> Result<Self, Error> {
         self.impulse_setting()?;
@@ -354,16 +376,18 @@ impl Spec {
     ///
     /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`].
     pub fn with_kernel(mut self, kernel: Kernel) -> Result<Self, Error> {
-        self.impulse_setting()?;
+        if self.base != Base::Sparse {
+            return Err(Error::NotImpulse(self.base.name()));
+        }
         self.kernel = kernel;
         Ok(self)
     }
 
-    /// Sparse convolution noise with impulse weights drawn as `weights` says.
+    /// Sparse convolution or Gabor noise with impulse weights drawn as `weights` says.
     ///
     /// # Errors
     ///
-    /// [`Error::NotImpulse`] unless the base is [`Base::Sparse`].
+    /// [`Error::NotImpulse`] unless the base is made of impulses.
     pub fn with_weights(mut self, weights: Weights) -> Result<Self, Error> {
         self.impulse_setting()?;
         self.weights = weights;
@@ -388,6 +412,131 @@ impl Spec {
         } else {
             noise.with_density(self.density)
         }
+    }
+
+    /// Gabor noise with frequency `F₀` and bandwidth `a` (see [`Gabor::with_spectrum`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotGabor`] unless the base is [`Base::Gabor`]; [`Error::Bandwidth`] and
+    /// [`Error::Frequency`] as [`Gabor::with_spectrum`].
+    pub fn with_spectrum(mut self, frequency: f32, bandwidth: f32) -> Result<Self, Error> {
+        self.gabor_setting()?;
+        GaborParameters::check_spectrum(frequency, bandwidth)?;
+        self.gabor.frequency = frequency;
+        self.gabor.bandwidth = bandwidth;
+        Ok(self)
+    }
+
+    /// Gabor noise with the anisotropic `direction` (1 to 3 components; the others 0; a
+    /// build in `D` dimensions uses the first `D`, and refuses a zero vector).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotGabor`] unless the base is [`Base::Gabor`]; [`Error::Direction`] for no
+    /// component or more than 3, a component that is not finite, or a zero vector.
+    pub fn with_direction(mut self, direction: &[f32]) -> Result<Self, Error> {
+        self.gabor_setting()?;
+        if direction.is_empty() || direction.len() > 3 {
+            return Err(Error::Direction);
+        }
+        let mut all = [0.0; 3];
+        for (slot, &c) in all.iter_mut().zip(direction) {
+            *slot = c;
+        }
+        let parameters = GaborParameters {
+            direction: all,
+            ..self.gabor
+        };
+        parameters.unit_direction::<3>()?;
+        self.gabor = parameters;
+        Ok(self)
+    }
+
+    /// Gabor noise with kernels oriented as `orientation` says.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotGabor`] unless the base is [`Base::Gabor`].
+    pub fn with_orientation(mut self, orientation: Orientation) -> Result<Self, Error> {
+        self.gabor_setting()?;
+        self.gabor.orientation = orientation;
+        Ok(self)
+    }
+
+    /// Gabor noise with the envelope `envelope`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotGabor`] unless the base is [`Base::Gabor`].
+    pub fn with_envelope(mut self, envelope: Envelope) -> Result<Self, Error> {
+        self.gabor_setting()?;
+        self.gabor.envelope = envelope;
+        Ok(self)
+    }
+
+    /// Gabor noise with magnitude `K` (its standard deviation).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotGabor`] unless the base is [`Base::Gabor`]; [`Error::Magnitude`] unless
+    /// `|K| ≤ 1024`.
+    pub fn with_magnitude(mut self, magnitude: f32) -> Result<Self, Error> {
+        self.gabor_setting()?;
+        GaborParameters::check_magnitude(magnitude)?;
+        self.gabor.magnitude = magnitude;
+        Ok(self)
+    }
+
+    fn gabor_setting(&self) -> Result<(), Error> {
+        if self.base == Base::Gabor {
+            Ok(())
+        } else {
+            Err(Error::NotGabor(self.base.name()))
+        }
+    }
+
+    /// The Gabor noise this describes in `D` dimensions, built in one step (the builders'
+    /// chain would move the noise through the stack at each step: too much for a
+    /// microcontroller's checksum program).
+    fn gabor<const D: usize>(&self) -> Result<Gabor<D>, Error> {
+        let impulses = if self.per_cell > 0 {
+            Impulses::fixed(u32::from(self.per_cell))?
+        } else {
+            Gabor::<D>::check_density(self.density)?;
+            Impulses::poisson_checked(Gabor::<D>::per_cell(self.density), self.weights)
+        };
+        Gabor::build(self.seed, &self.gabor, impulses.with_weights(self.weights))
+    }
+
+    /// Gabor noise's frequency and bandwidth, `(F₀, a)` (the defaults for other bases).
+    #[must_use]
+    pub const fn spectrum(&self) -> (f32, f32) {
+        (self.gabor.frequency, self.gabor.bandwidth)
+    }
+
+    /// Gabor noise's direction, three components (the default for other bases).
+    #[must_use]
+    pub const fn direction(&self) -> [f32; 3] {
+        self.gabor.direction
+    }
+
+    /// Gabor noise's orientation (the default for other bases).
+    #[must_use]
+    pub const fn orientation(&self) -> Orientation {
+        self.gabor.orientation
+    }
+
+    /// Gabor noise's envelope (the default for other bases).
+    #[must_use]
+    pub const fn envelope(&self) -> Envelope {
+        self.gabor.envelope
+    }
+
+    /// Gabor noise's magnitude (the default for other bases).
+    #[must_use]
+    pub const fn magnitude(&self) -> f32 {
+        self.gabor.magnitude
     }
 
     /// Wiener noise with `covariance`.
@@ -455,14 +604,14 @@ impl Spec {
         self.kernel
     }
 
-    /// Sparse convolution noise's weights (the default for other bases).
+    /// Sparse convolution or Gabor noise's weights (the default for other bases).
     #[must_use]
     pub const fn weights(&self) -> Weights {
         self.weights
     }
 
-    /// Sparse convolution noise's density in impulses per kernel volume, or its fixed count
-    /// per cell (`Err`).
+    /// Sparse convolution or Gabor noise's density in impulses per kernel volume, or its
+    /// fixed count per cell (`Err`).
     pub const fn density(&self) -> Result<f32, u32> {
         if self.per_cell > 0 {
             Err(self.per_cell as u32)
@@ -554,6 +703,11 @@ impl Spec {
                 3 => Any::Wiener3(WienerNoise::new(s).with_covariance(self.covariance)),
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
+            Base::Gabor => match D {
+                1 => Any::Gabor1(self.gabor::<1>()?),
+                2 => Any::Gabor2(self.gabor::<2>()?),
+                _ => Any::Gabor3(self.gabor::<3>()?),
+            },
         };
         Ok(SpecNoise {
             spec: *self,
@@ -595,11 +749,38 @@ impl fmt::Display for Spec {
                 Distribution::Uniform => " distribution=uniform",
             })?;
         }
-        if self.base.is_impulse() {
+        if self.base == Base::Gabor {
+            let g = &self.gabor;
+            f.write_str(" frequency=")?;
+            decimal::write_f32(f, g.frequency)?;
+            f.write_str(" bandwidth=")?;
+            decimal::write_f32(f, g.bandwidth)?;
+            f.write_str(" direction=")?;
+            for (i, c) in g.direction.iter().enumerate() {
+                if i > 0 {
+                    f.write_str(",")?;
+                }
+                decimal::write_f32(f, *c)?;
+            }
+            f.write_str(match g.orientation {
+                Orientation::Anisotropic => " orientation=anisotropic",
+                Orientation::Isotropic => " orientation=isotropic",
+                Orientation::Hybrid => " orientation=hybrid",
+            })?;
+            f.write_str(match g.envelope {
+                Envelope::Hann => " envelope=hann",
+                Envelope::Truncated => " envelope=truncated",
+            })?;
+            f.write_str(" magnitude=")?;
+            decimal::write_f32(f, g.magnitude)?;
+        }
+        if self.base == Base::Sparse {
             f.write_str(match self.kernel {
                 Kernel::Cosine => " kernel=cosine",
                 Kernel::CatmullRom => " kernel=catmull-rom",
             })?;
+        }
+        if self.base.is_impulse() {
             f.write_str(match self.weights {
                 Weights::Sign => " weights=sign",
                 Weights::Uniform => " weights=uniform",
@@ -714,10 +895,11 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
-     wavelet, multiband, sparse, wiener)";
+     wavelet, multiband, sparse, wiener, gabor)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
-     distribution=, density=, count=, kernel=, weights=, covariance=, fbm, turbulence, ridged, \
-     octaves=, lacunarity=, gain=)";
+     distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
+     direction=, orientation=, envelope=, magnitude=, fbm, turbulence, ridged, octaves=, \
+     lacunarity=, gain=)";
 
 impl FromStr for Spec {
     type Err = ParseError;
@@ -739,6 +921,7 @@ impl FromStr for Spec {
         let mut kind = None;
         let (mut count, mut lacunarity, mut gain) = (None, None, None);
         let (mut first, mut weights) = (None, None);
+        let (mut frequency, mut bandwidth) = (None, None);
         let defaults = Octaves::default();
         for (at, word) in words {
             let (key, value, value_at) = match split_at_byte(word, b'=') {
@@ -757,6 +940,12 @@ impl FromStr for Spec {
                 "kernel" => &mut seen.kernel,
                 "weights" => &mut seen.weights,
                 "covariance" => &mut seen.covariance,
+                "frequency" => &mut seen.frequency,
+                "bandwidth" => &mut seen.bandwidth,
+                "direction" => &mut seen.direction,
+                "orientation" => &mut seen.orientation,
+                "envelope" => &mut seen.envelope,
+                "magnitude" => &mut seen.magnitude,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -774,11 +963,29 @@ impl FromStr for Spec {
                     refused: Some(Error::NotMultiband(base.name())),
                 });
             }
-            if matches!(key, "density" | "count" | "kernel" | "weights") && !base.is_impulse() {
+            if matches!(key, "density" | "count" | "weights") && !base.is_impulse() {
                 return Err(ParseError {
                     position: at,
-                    expected: "impulse settings only for sparse noise",
+                    expected: "impulse settings only for sparse and Gabor noise",
                     refused: Some(Error::NotImpulse(base.name())),
+                });
+            }
+            if key == "kernel" && base != Base::Sparse {
+                return Err(ParseError {
+                    position: at,
+                    expected: "a kernel only for sparse noise",
+                    refused: Some(Error::NotImpulse(base.name())),
+                });
+            }
+            if matches!(
+                key,
+                "frequency" | "bandwidth" | "direction" | "orientation" | "envelope" | "magnitude"
+            ) && base != Base::Gabor
+            {
+                return Err(ParseError {
+                    position: at,
+                    expected: "Gabor settings only for Gabor noise",
+                    refused: Some(Error::NotGabor(base.name())),
                 });
             }
             if key == "covariance" && base != Base::Wiener {
@@ -838,6 +1045,62 @@ impl FromStr for Spec {
                     spec = spec
                         .with_covariance(covariance)
                         .map_err(|e| refused(at, E, e))?;
+                }
+                "frequency" => {
+                    const E: &str = "a frequency: a plain decimal";
+                    let v = needs_value(E)?;
+                    frequency = Some((value_at, decimal::parse_f32(v).ok_or(err(value_at, E))?));
+                }
+                "bandwidth" => {
+                    const E: &str = "a bandwidth: a plain decimal";
+                    let v = needs_value(E)?;
+                    bandwidth = Some((value_at, decimal::parse_f32(v).ok_or(err(value_at, E))?));
+                }
+                "direction" => {
+                    const E: &str = "1 to 3 direction components, separated by commas";
+                    let v = needs_value(E)?;
+                    let mut d = [0.0f32; 3];
+                    let mut n = 0;
+                    let mut part_at = value_at;
+                    for part in Parts(Some(v)) {
+                        let slot = d.get_mut(n).ok_or(err(part_at, E))?;
+                        *slot = decimal::parse_f32(part).ok_or(err(part_at, E))?;
+                        n += 1;
+                        part_at += part.len() + 1;
+                    }
+                    spec = spec
+                        .with_direction(d.get(..n).unwrap_or(&[]))
+                        .map_err(|e| refused(value_at, E, e))?;
+                }
+                "orientation" => {
+                    const E: &str = "an orientation (anisotropic, isotropic, hybrid)";
+                    let orientation = match needs_value(E)? {
+                        "anisotropic" => Orientation::Anisotropic,
+                        "isotropic" => Orientation::Isotropic,
+                        "hybrid" => Orientation::Hybrid,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec
+                        .with_orientation(orientation)
+                        .map_err(|e| refused(at, E, e))?;
+                }
+                "envelope" => {
+                    const E: &str = "an envelope (hann, truncated)";
+                    let envelope = match needs_value(E)? {
+                        "hann" => Envelope::Hann,
+                        "truncated" => Envelope::Truncated,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec
+                        .with_envelope(envelope)
+                        .map_err(|e| refused(at, E, e))?;
+                }
+                "magnitude" => {
+                    const E: &str = "a magnitude within ±1024";
+                    let v = decimal::parse_f32(needs_value(E)?).ok_or(err(value_at, E))?;
+                    spec = spec
+                        .with_magnitude(v)
+                        .map_err(|e| refused(value_at, E, e))?;
                 }
                 "seed" => {
                     const E: &str = "a seed in 0..=4294967295";
@@ -963,6 +1226,24 @@ impl FromStr for Spec {
             };
             spec = spec.with_bands(bands.map_err(refused)?).map_err(refused)?;
         }
+        if frequency.is_some() || bandwidth.is_some() {
+            // Checked together, so their order in the text does not matter.
+            let (f0, a) = spec.spectrum();
+            spec = spec
+                .with_spectrum(frequency.map_or(f0, |f| f.1), bandwidth.map_or(a, |b| b.1))
+                .map_err(|e| {
+                    let at = match e {
+                        Error::Bandwidth(_) => bandwidth.map(|b| b.0),
+                        _ => frequency.map(|f| f.0),
+                    };
+                    ParseError {
+                        position: at.unwrap_or(0),
+                        expected: "a frequency in [0, 64 × bandwidth] and a bandwidth in \
+                                   [1/256, 256]",
+                        refused: Some(e),
+                    }
+                })?;
+        }
         let first_octave_setting = [
             count.map(|c| c.0),
             lacunarity.map(|l| l.0),
@@ -1018,6 +1299,12 @@ struct Seen {
     kernel: bool,
     weights: bool,
     covariance: bool,
+    frequency: bool,
+    bandwidth: bool,
+    direction: bool,
+    orientation: bool,
+    envelope: bool,
+    magnitude: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -1166,6 +1453,9 @@ enum Any<S: Tiles> {
     Wiener2(WienerNoise<2>),
     Wiener3(WienerNoise<3>),
     Wiener4(WienerNoise<4>),
+    Gabor1(Gabor<1>),
+    Gabor2(Gabor<2>),
+    Gabor3(Gabor<3>),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1288,7 +1578,7 @@ impl<R: Real, const D: usize> Op<R, D> for Gradient<R, D> {
 /// `SpecNoise<D>` dispatches to the typed noise; `$wavelet` and `$multiband` name the
 /// variants sampled in this dimension, if any.
 macro_rules! spec_noise {
-    ($d:literal, $sparse:ident, $wiener:ident $(, $wavelet:ident, $multiband:ident)?) => {
+    ($d:literal, $sparse:ident, $wiener:ident, [$($gabor:ident)?] $(, $wavelet:ident, $multiband:ident)?) => {
         impl<S: Tiles> Layers<$d, S> {
             /// Runs `op` on the (possibly periodic) base noise.
             fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
@@ -1302,12 +1592,14 @@ macro_rules! spec_noise {
                     Any::M4093(n) => with_period(n, period, op),
                     Any::$sparse(n) => op.run(n),
                     Any::$wiener(n) => op.run(n),
+                    $(Any::$gabor(n) => op.run(n),)?
                     $(Any::$wavelet(n) => op.run(n),
                     Any::$multiband(n) => op.run(n),)?
                     #[allow(unreachable_patterns, reason = "the other dimensions")]
                     Any::Wavelet2(_) | Any::Wavelet3(_) | Any::Multiband2(_) | Any::Multiband3(_)
                     | Any::Sparse1(_) | Any::Sparse2(_) | Any::Sparse3(_) | Any::Sparse4(_)
-                    | Any::Wiener1(_) | Any::Wiener2(_) | Any::Wiener3(_) | Any::Wiener4(_) => {
+                    | Any::Wiener1(_) | Any::Wiener2(_) | Any::Wiener3(_) | Any::Wiener4(_)
+                    | Any::Gabor1(_) | Any::Gabor2(_) | Any::Gabor3(_) => {
                         op.run(&Zero)
                     }
                 }
@@ -1359,7 +1651,7 @@ macro_rules! spec_noise_entry_points {
     };
 }
 
-spec_noise!(1, Sparse1, Wiener1);
-spec_noise!(2, Sparse2, Wiener2, Wavelet2, Multiband2);
-spec_noise!(3, Sparse3, Wiener3, Wavelet3, Multiband3);
-spec_noise!(4, Sparse4, Wiener4);
+spec_noise!(1, Sparse1, Wiener1, [Gabor1]);
+spec_noise!(2, Sparse2, Wiener2, [Gabor2], Wavelet2, Multiband2);
+spec_noise!(3, Sparse3, Wiener3, [Gabor3], Wavelet3, Multiband3);
+spec_noise!(4, Sparse4, Wiener4, []);

@@ -1,7 +1,8 @@
 //! Every impulse noise of the runtime description (`bandnoise::spec::Base`, so one added there
 //! is fuzzed unasked) and Wiener noise, with arbitrary settings (density as any f32 bit
-//! pattern, counts, kernels, weights; Wiener noise's covariance) and arbitrary bit patterns as
-//! coordinates and seeds, 1D–4D, in f32 and I16F16:
+//! pattern, counts, kernels, weights; Wiener noise's covariance; Gabor noise's frequency,
+//! bandwidth, direction and magnitude as any bit patterns, its orientation and envelope) and
+//! arbitrary bit patterns as coordinates and seeds, 1D–4D, in f32 and I16F16:
 //! settings are refused for a documented reason or build; samples never panic, are never NaN
 //! or -0.0, lie within the documented bound; the gradient's value is the sample's; the batch
 //! path equals `sample` bit for bit; fixed point follows f32 where the input is exact in both.
@@ -9,7 +10,9 @@
 
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
-use bandnoise::impulse::{Kernel, MAX_FIXED, MIN_DENSITY, Weights};
+use bandnoise::impulse::{
+    Envelope, Kernel, MAX_FIXED, MIN_DENSITY, Orientation, RADIUS_TIMES_BANDWIDTH, Weights,
+};
 use bandnoise::spec::{Base, Spec};
 use bandnoise::wiener::Covariance;
 use bandnoise::{Error, I16F16, Noise, NoiseGradient};
@@ -27,6 +30,10 @@ struct Input {
     catmull_rom: bool,
     uniform: bool,
     bits: [u32; 4],
+    /// Gabor noise: frequency, bandwidth, direction and magnitude bits, orientation, envelope.
+    gabor: [u32; 6],
+    orientation: u8,
+    truncated: bool,
 }
 
 fn dim<const D: usize>(spec: &Spec, floats: [f32; 4], fixed: [I16F16; 4], exact: bool)
@@ -38,6 +45,17 @@ where
         Err(Error::Density { density, max, .. }) => {
             // The spec's range is the widest (4D); each dimension's own is narrower.
             assert!(density > max, "{spec} refused in {D}D");
+            return;
+        }
+        Err(Error::Dimension { .. }) => {
+            assert!(!spec.base().has_dimension(D), "{spec} refused in {D}D");
+            return;
+        }
+        Err(Error::Direction) => {
+            // A direction whose first D components are (nearly) 0.
+            let direction = spec.direction();
+            let length: f64 = direction.iter().take(D).map(|&c| c as f64 * c as f64).sum();
+            assert!(length < 1e-60, "{spec} refused in {D}D");
             return;
         }
         Err(e) => panic!("{spec} in {D}D: {e}"),
@@ -77,9 +95,24 @@ where
         // most (2r)^D) is off by at most 1e-4 (the table's I16F16 error) plus its squared
         // distance's rounding times the table's slope (2⁻¹⁵·10), scaled by 1/σ: in all at
         // most that times amplitude_bound.
+        //
+        // Gabor noise adds, per impulse, the harmonic's error: its table's (1e-4) and its
+        // phase's rounding in fixed point (the offset's 2⁻¹⁶ per axis times the turns per
+        // kernel radius, the wave vector's and the sum's roundings), times 2π; the truncated
+        // envelope jumps by 0.05 at the rim, which a rounding can cross.
         let qf: [f32; D] = core::array::from_fn(|a| fixed[a].to_num::<f32>());
         let vf: f32 = noise.sample(qf);
-        let tolerance = (1e-4 + 10.0 / 32768.0) * bound + 1.0 / 4096.0;
+        let mut per_impulse = 1e-4 + 10.0 / 32768.0;
+        if spec.base() == Base::Gabor {
+            let (f0, a) = spec.spectrum();
+            let turns = f0 as f64 * RADIUS_TIMES_BANDWIDTH / a as f64;
+            let phase = (turns * (D as f64 + 1.0) + 2.0 * D as f64 + 2.0) / 65536.0;
+            per_impulse += (1e-4 + std::f64::consts::TAU * phase) as f32;
+            if spec.envelope() == Envelope::Truncated {
+                per_impulse += 0.05;
+            }
+        }
+        let tolerance = per_impulse * bound + 1.0 / 4096.0;
         assert!(
             (w.to_num::<f32>() - vf).abs() <= tolerance,
             "{spec} {D}D {q:?}: {w} vs {vf} (tolerance {tolerance})"
@@ -91,9 +124,12 @@ where
 /// documented reason).
 fn impulse_settings(mut spec: Spec, input: &Input) -> Option<Spec> {
     if input.catmull_rom {
-        spec = spec
-            .with_kernel(Kernel::CatmullRom)
-            .expect("an impulse noise");
+        let kernel = spec.with_kernel(Kernel::CatmullRom);
+        if spec.base() == Base::Sparse {
+            spec = kernel.expect("sparse noise");
+        } else {
+            assert_eq!(kernel, Err(Error::NotImpulse(spec.base().name())));
+        }
     }
     if input.uniform {
         spec = spec
@@ -121,6 +157,62 @@ fn impulse_settings(mut spec: Spec, input: &Input) -> Option<Spec> {
     }
 }
 
+/// Gabor noise's settings from `input`: `None` where they are refused (for the documented
+/// reason).
+fn gabor_settings(mut spec: Spec, input: &Input) -> Option<Spec> {
+    let [f, a, x, y, z, k] = input.gabor.map(f32::from_bits);
+    match spec.with_spectrum(f, a) {
+        Ok(s) => spec = s,
+        Err(Error::Bandwidth(b)) => {
+            assert!(!(1.0 / 256.0..=256.0).contains(&b), "{b} refused");
+            return None;
+        }
+        Err(Error::Frequency { frequency, .. }) => {
+            assert!(
+                !(0.0..=64.0 * a).contains(&frequency),
+                "{frequency} refused"
+            );
+            return None;
+        }
+        Err(e) => panic!("{e}"),
+    }
+    match spec.with_direction(&[x, y, z]) {
+        Ok(s) => spec = s,
+        Err(Error::Direction) => {
+            let finite = [x, y, z].iter().all(|c| c.is_finite());
+            let length = [x, y, z].iter().map(|&c| c as f64 * c as f64).sum::<f64>();
+            assert!(
+                !finite || !(1e-60..).contains(&length),
+                "{x} {y} {z} refused"
+            );
+            return None;
+        }
+        Err(e) => panic!("{e}"),
+    }
+    match spec.with_magnitude(k) {
+        Ok(s) => spec = s,
+        Err(Error::Magnitude(m)) => {
+            assert!(!(-1024.0..=1024.0).contains(&m), "{m} refused");
+            return None;
+        }
+        Err(e) => panic!("{e}"),
+    }
+    let orientations = [
+        Orientation::Anisotropic,
+        Orientation::Isotropic,
+        Orientation::Hybrid,
+    ];
+    spec = spec
+        .with_orientation(orientations[usize::from(input.orientation) % 3])
+        .expect("Gabor noise");
+    if input.truncated {
+        spec = spec
+            .with_envelope(Envelope::Truncated)
+            .expect("Gabor noise");
+    }
+    Some(spec)
+}
+
 fuzz_target!(|input: Input| {
     let bases: Vec<Base> = Base::ALL
         .into_iter()
@@ -138,6 +230,17 @@ fuzz_target!(|input: Input| {
         }
         assert_eq!(spec.with_density(1.0), Err(Error::NotImpulse("wiener")));
     } else {
+        if base == Base::Gabor {
+            let Some(set) = gabor_settings(spec, &input) else {
+                return;
+            };
+            spec = set;
+        } else {
+            assert_eq!(
+                spec.with_spectrum(1.0, 1.0),
+                Err(Error::NotGabor(base.name()))
+            );
+        }
         let Some(set) = impulse_settings(spec, &input) else {
             return;
         };

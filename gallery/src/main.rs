@@ -190,7 +190,29 @@ fn run(o: &Options) -> Result<(), String> {
     render_wavelet_tilings(o)?;
     render_sparse_densities(o)?;
     render_wiener_covariances(o)?;
+    render_gabor_variants(o)?;
     render_wavelet_filtering(o)
+}
+
+/// Gabor noise (Lagae et al. 2009) beyond its default (`gabor-2d`: anisotropic along x): the
+/// isotropic variant, narrow-band stripes at 45°, a wide band, and the paper's truncated
+/// envelope, ±3σ.
+fn render_gabor_variants(o: &Options) -> Result<(), String> {
+    let variants = [
+        ("gabor-isotropic-2d", "orientation=isotropic"),
+        (
+            "gabor-narrow-45-2d",
+            "frequency=2 bandwidth=0.4 direction=1,1",
+        ),
+        ("gabor-wide-2d", "frequency=1 bandwidth=2"),
+        ("gabor-truncated-2d", "envelope=truncated"),
+    ];
+    for (name, settings) in variants {
+        let text = format!("gabor seed={} {settings}", o.seed);
+        let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+        render_scaled::<f32, _>(o, name, &build(&spec)?, 3.0)?;
+    }
+    Ok(())
 }
 
 /// Sparse convolution noise at 1, 3, 10 and 30 impulses per kernel volume, with Lewis's and

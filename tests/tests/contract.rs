@@ -409,6 +409,26 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_gradient::<R, 3, _>(text, &n3, |p| n3.sample_with_gradient(p), rng);
     }
 
+    // Gabor noise, 1D–3D: the default, every variant and envelope, the extreme bandwidths
+    // and frequency ratio, a fixed count; batches and gradients.
+    for text in [
+        "gabor seed=4",
+        "gabor seed=4 orientation=isotropic envelope=truncated direction=1,1,1",
+        "gabor seed=4 orientation=hybrid count=1 weights=uniform magnitude=-1024",
+        "gabor seed=4 bandwidth=256 frequency=16384 density=64",
+        "gabor seed=4 bandwidth=0.00390625 frequency=0 density=0.01",
+    ] {
+        let spec: Spec = text.parse().expect("valid");
+        let n1 = spec.build::<1>().expect("1D");
+        let n2 = spec.build::<2>().expect("2D");
+        let n3 = spec.build::<3>().expect("3D");
+        sweep_noise::<R, 1, _>(text, &n1, rng);
+        sweep_noise::<R, 2, _>(text, &n2, rng);
+        sweep_noise::<R, 3, _>(text, &n3, rng);
+        sweep_gradient::<R, 2, _>(text, &n2, |p| n2.sample_with_gradient(p), rng);
+        sweep_gradient::<R, 3, _>(text, &n3, |p| n3.sample_with_gradient(p), rng);
+    }
+
     // The error function behind the uniform distribution.
     for (s, _) in R::specials() {
         let v = erf(s);

@@ -2,6 +2,7 @@
 //! describes bit for bit, the text form round-trips, bad text is an error with a position (never
 //! a panic), and every noise type of the crate is described.
 
+use bandnoise::impulse::{Envelope, Gabor, Orientation};
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
 use bandnoise::prelude::*;
 use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
@@ -273,8 +274,34 @@ fn random_spec(rng: &mut Rng) -> Spec {
                 .expect("multiband");
         }
     }
-    if base.is_impulse() {
+    if base == Base::Gabor {
+        let a = rng.f64_in(1.0 / 256.0, 256.0) as f32;
+        let f = rng.f64_in(0.0, 64.0 * a as f64) as f32;
+        spec = spec.with_spectrum(f, a).expect("in range");
+        let components = 1 + rng.next_u64() as usize % 3;
+        let direction: Vec<f32> = (0..components)
+            .map(|_| rng.f64_in(-2.0, 2.0) as f32)
+            .collect();
+        spec = spec
+            .with_direction(&direction)
+            .expect("almost surely non-zero");
+        let orientations = [
+            Orientation::Anisotropic,
+            Orientation::Isotropic,
+            Orientation::Hybrid,
+        ];
+        spec = spec
+            .with_orientation(orientations[rng.next_u64() as usize % 3])
+            .expect("gabor");
         if rng.next_u64().is_multiple_of(2) {
+            spec = spec.with_envelope(Envelope::Truncated).expect("gabor");
+        }
+        spec = spec
+            .with_magnitude(rng.f64_in(-1024.0, 1024.0) as f32)
+            .expect("in range");
+    }
+    if base.is_impulse() {
+        if base == Base::Sparse && rng.next_u64().is_multiple_of(2) {
             spec = spec.with_kernel(Kernel::CatmullRom).expect("sparse");
         }
         if rng.next_u64().is_multiple_of(2) {
@@ -482,6 +509,7 @@ fn every_noise_type_in_core_is_described() {
         ("Multiband", "multiband"),
         ("SparseConvolution", "sparse"),
         ("WienerNoise", "wiener"),
+        ("Gabor", "gabor"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -673,6 +701,97 @@ fn wiener_specs_sample_their_typed_noise_bit_for_bit() {
         Err(Error::NotPeriodic("wiener"))
     ));
     assert!("wiener density=3".parse::<Spec>().is_err());
+}
+
+/// A Gabor spec samples the typed noise it names bit for bit (value and gradient, f32 and
+/// I16F16, 1D–3D, every variant), its settings read in any order (frequency and bandwidth are
+/// checked together), and they are refused for other noises and out of range.
+#[test]
+fn gabor_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(188);
+    let spec: Spec = "gabor seed=9 bandwidth=0.5 frequency=30 direction=1,2 \
+                      orientation=isotropic envelope=truncated weights=uniform density=40 \
+                      magnitude=0.5"
+        .parse()
+        .expect("valid: 30 ≤ 64 × 0.5, whatever the order");
+    fn typed<const D: usize>(seed: u32) -> Gabor<D> {
+        Gabor::<D>::new(seed)
+            .with_spectrum(30.0, 0.5)
+            .unwrap()
+            .with_direction(core::array::from_fn(|a| [1.0, 2.0, 0.0][a]))
+            .unwrap()
+            .with_orientation(Orientation::Isotropic)
+            .with_envelope(Envelope::Truncated)
+            .with_weights(Weights::Uniform)
+            .with_density(40.0)
+            .unwrap()
+            .with_magnitude(0.5)
+            .unwrap()
+    }
+    same_bits::<1, _>(&spec, &typed(9), &mut rng);
+    same_bits::<2, _>(&spec, &typed(9), &mut rng);
+    same_bits::<3, _>(&spec, &typed(9), &mut rng);
+    let plain = Spec::new(Base::Gabor, 3);
+    same_bits::<2, _>(&plain, &Gabor::<2>::new(3), &mut rng);
+    let hybrid = plain
+        .with_orientation(Orientation::Hybrid)
+        .unwrap()
+        .with_fixed_count(3)
+        .unwrap();
+    let typed_hybrid = Gabor::<3>::new(3)
+        .with_orientation(Orientation::Hybrid)
+        .with_fixed_count(3)
+        .unwrap();
+    same_bits::<3, _>(&hybrid, &typed_hybrid, &mut rng);
+    assert_eq!(
+        plain.to_string(),
+        "gabor seed=3 frequency=1 bandwidth=0.8 direction=1,0,0 orientation=anisotropic \
+         envelope=hann magnitude=1 weights=sign density=16"
+    );
+    // Refusals, each at its position and for its reason.
+    let e = "perlin frequency=2".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::NotGabor("perlin")));
+    assert_eq!(e.position(), 7);
+    let e = "gabor kernel=cosine".parse::<Spec>().unwrap_err();
+    assert_eq!(
+        (e.position(), e.refused()),
+        (6, Some(Error::NotImpulse("gabor")))
+    );
+    let e = "gabor frequency=60 bandwidth=0.5"
+        .parse::<Spec>()
+        .unwrap_err();
+    assert!(matches!(e.refused(), Some(Error::Frequency { .. })), "{e}");
+    assert_eq!(e.position(), 16, "{e}");
+    let e = "gabor bandwidth=0".parse::<Spec>().unwrap_err();
+    assert_eq!(
+        (e.position(), e.refused()),
+        (16, Some(Error::Bandwidth(0.0)))
+    );
+    let e = "gabor direction=0,0".parse::<Spec>().unwrap_err();
+    assert_eq!((e.position(), e.refused()), (16, Some(Error::Direction)));
+    let e = "gabor direction=1,0,0,0".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 22, "{e}");
+    let e = "gabor orientation=sideways".parse::<Spec>().unwrap_err();
+    assert_eq!(e.position(), 18, "{e}");
+    let e = "gabor magnitude=2000".parse::<Spec>().unwrap_err();
+    assert_eq!(
+        (e.position(), e.refused()),
+        (16, Some(Error::Magnitude(2000.0)))
+    );
+    // A direction along z has no 2D form; Gabor noise has no 4D form.
+    let z = Spec::new(Base::Gabor, 0)
+        .with_direction(&[0.0, 0.0, 1.0])
+        .unwrap();
+    assert_eq!(z.build::<2>().unwrap_err(), Error::Direction);
+    assert!(z.build::<3>().is_ok());
+    assert!(matches!(
+        Spec::new(Base::Gabor, 0).build::<4>().unwrap_err(),
+        Error::Dimension {
+            noise: "gabor",
+            dims: 4
+        }
+    ));
+    assert!(Spec::new(Base::Gabor, 0).with_period(&[4]).is_err());
 }
 
 /// With the `serde` feature a spec is its text form: a JSON string that round-trips, and a bad

@@ -148,6 +148,74 @@ impl Setting {
     }
 }
 
+/// Gabor noise's parameters, for building it in one step from a description (a chain of
+/// builders would move the noise, 480 bytes, through the stack at each step: more than a
+/// microcontroller's checksum program has).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Parameters {
+    pub(crate) frequency: f32,
+    pub(crate) bandwidth: f32,
+    /// Up to 3 components; a noise in `D` dimensions takes the first `D`.
+    pub(crate) direction: [f32; 3],
+    pub(crate) orientation: Orientation,
+    pub(crate) envelope: Envelope,
+    pub(crate) magnitude: f32,
+}
+
+impl Parameters {
+    /// The defaults of [`Gabor::new`].
+    pub(crate) const DEFAULT: Self = Self {
+        frequency: DEFAULT_FREQUENCY,
+        bandwidth: DEFAULT_BANDWIDTH,
+        direction: [1.0, 0.0, 0.0],
+        orientation: Orientation::Anisotropic,
+        envelope: Envelope::Hann,
+        magnitude: 1.0,
+    };
+
+    /// Checks the spectrum: [`Gabor::with_spectrum`]'s errors.
+    pub(crate) fn check_spectrum(frequency: f32, bandwidth: f32) -> Result<(), Error> {
+        if !(MIN_BANDWIDTH..=MAX_BANDWIDTH).contains(&bandwidth) {
+            return Err(Error::Bandwidth(bandwidth));
+        }
+        if !(0.0..=MAX_FREQUENCY_RATIO * bandwidth).contains(&frequency) {
+            return Err(Error::Frequency {
+                frequency,
+                bandwidth,
+                max_ratio: MAX_FREQUENCY_RATIO,
+            });
+        }
+        Ok(())
+    }
+
+    /// Checks the magnitude: [`Gabor::with_magnitude`]'s error.
+    pub(crate) fn check_magnitude(magnitude: f32) -> Result<(), Error> {
+        if (-MAX_MAGNITUDE..=MAX_MAGNITUDE).contains(&magnitude) {
+            Ok(())
+        } else {
+            Err(Error::Magnitude(magnitude))
+        }
+    }
+
+    /// The unit direction from the first `D` components: [`Gabor::with_direction`]'s error.
+    pub(crate) fn unit_direction<const D: usize>(&self) -> Result<[f32; D], Error> {
+        let d: [f32; D] = core::array::from_fn(|a| self.direction.get(a).copied().unwrap_or(0.0));
+        let length = libm::sqrt(d.iter().map(|&c| c as f64 * c as f64).sum::<f64>());
+        // Finite components give a finite length; NaN fails the range test.
+        if !d.iter().all(|c| c.is_finite()) || !(1e-30..).contains(&length) {
+            return Err(Error::Direction);
+        }
+        Ok(d.map(|c| (c as f64 / length) as f32))
+    }
+}
+
+const DEFAULT_FREQUENCY: f32 = 1.0;
+const DEFAULT_BANDWIDTH: f32 = 0.8;
+const MIN_BANDWIDTH: f32 = 1.0 / 256.0;
+const MAX_BANDWIDTH: f32 = 256.0;
+const MAX_FREQUENCY_RATIO: f32 = 64.0;
+const MAX_MAGNITUDE: f32 = 1024.0;
+
 /// An impulse's own random parameters, in cell units: its harmonic's wave vector (turns per
 /// kernel radius along each axis) and its phase (turns).
 struct Params<R, const D: usize> {
@@ -214,36 +282,58 @@ pub struct Gabor<const D: usize> {
 
 impl<const D: usize> Gabor<D> {
     /// The default frequency `F₀`, cycles per unit.
-    pub const DEFAULT_FREQUENCY: f32 = 1.0;
+    pub const DEFAULT_FREQUENCY: f32 = DEFAULT_FREQUENCY;
     /// The default bandwidth `a`.
-    pub const DEFAULT_BANDWIDTH: f32 = 0.8;
+    pub const DEFAULT_BANDWIDTH: f32 = DEFAULT_BANDWIDTH;
     /// The default density, impulses per kernel volume.
     pub const DEFAULT_DENSITY: f32 = 16.0;
     /// The smallest bandwidth (a kernel 250 units wide).
-    pub const MIN_BANDWIDTH: f32 = 1.0 / 256.0;
+    pub const MIN_BANDWIDTH: f32 = MIN_BANDWIDTH;
     /// The largest bandwidth (a kernel 1/260 unit wide).
-    pub const MAX_BANDWIDTH: f32 = 256.0;
+    pub const MAX_BANDWIDTH: f32 = MAX_BANDWIDTH;
     /// The largest ratio `F₀ / a` (62 cycles within a kernel's radius: a nearly pure tone).
-    pub const MAX_FREQUENCY_RATIO: f32 = 64.0;
+    pub const MAX_FREQUENCY_RATIO: f32 = MAX_FREQUENCY_RATIO;
     /// The largest magnitude `K`.
-    pub const MAX_MAGNITUDE: f32 = 1024.0;
+    pub const MAX_MAGNITUDE: f32 = MAX_MAGNITUDE;
 
     /// The noise for `seed`, with the defaults above.
     #[must_use]
     pub fn new(seed: u32) -> Self {
-        const { assert!(D >= 1 && D <= 3, "Gabor noise has 1 to 3 dimensions") };
+        let impulses =
+            Impulses::poisson_checked(Self::per_cell(Self::DEFAULT_DENSITY), Weights::Sign);
         let direction = core::array::from_fn(|a| if a == 0 { 1.0 } else { 0.0 });
+        Self::assemble(seed, &Parameters::DEFAULT, direction, impulses)
+    }
+
+    /// The noise for `seed` with `parameters` (checked here) and `impulses` (checked by the
+    /// caller: [`check_density`](Self::check_density)), in one step.
+    pub(crate) fn build(
+        seed: u32,
+        parameters: &Parameters,
+        impulses: Impulses,
+    ) -> Result<Self, Error> {
+        Parameters::check_spectrum(parameters.frequency, parameters.bandwidth)?;
+        Parameters::check_magnitude(parameters.magnitude)?;
+        let direction = parameters.unit_direction::<D>()?;
+        Ok(Self::assemble(seed, parameters, direction, impulses))
+    }
+
+    /// The noise from checked parts.
+    fn assemble(
+        seed: u32,
+        parameters: &Parameters,
+        direction: [f32; D],
+        impulses: Impulses,
+    ) -> Self {
+        const { assert!(D >= 1 && D <= 3, "Gabor noise has 1 to 3 dimensions") };
         Self {
             hash: CellHash::new(seed),
-            impulses: Impulses::poisson_checked(
-                Self::per_cell(Self::DEFAULT_DENSITY),
-                Weights::Sign,
-            ),
-            orientation: Orientation::Anisotropic,
-            envelope: Envelope::Hann,
-            magnitude: 1.0,
-            frequency: Self::DEFAULT_FREQUENCY,
-            bandwidth: Self::DEFAULT_BANDWIDTH,
+            impulses,
+            orientation: parameters.orientation,
+            envelope: parameters.envelope,
+            magnitude: parameters.magnitude,
+            frequency: parameters.frequency,
+            bandwidth: parameters.bandwidth,
             direction,
             to_cells: Setting::default(),
             turns: Setting::default(),
@@ -253,11 +343,21 @@ impl<const D: usize> Gabor<D> {
         .derive()
     }
 
+    /// `1/r` rounded to a multiple of 2⁻¹⁶, so that `f32`, `f64` and I16F16 scale coordinates
+    /// by the same number (a fixed-point scale rounded on its own would shift the cells of
+    /// points far from the origin by up to `|p| · 2⁻¹⁷`, hence the harmonic's phase): the
+    /// kernel's radius as used, within `2⁻¹⁷ r` of `√(ln 20/π)/a` (0.2% at the smallest
+    /// bandwidth, 10⁻⁵ at the default).
+    fn to_cells_exact(&self) -> f64 {
+        let exact = self.bandwidth as f64 / RADIUS_TIMES_BANDWIDTH;
+        libm::round(exact * 65536.0).max(1.0) / 65536.0
+    }
+
     /// Computes the derived settings from the parameters.
     fn derive(mut self) -> Self {
-        let radius = RADIUS_TIMES_BANDWIDTH / self.bandwidth as f64;
-        let turns = self.frequency as f64 * radius;
-        self.to_cells = Setting::of(1.0 / radius);
+        let to_cells = self.to_cells_exact();
+        let turns = self.frequency as f64 / to_cells;
+        self.to_cells = Setting::of(to_cells);
         self.turns = Setting::of(turns);
         self.wave = core::array::from_fn(|a| Setting::of(turns * self.direction[a] as f64));
         self.scale = Setting::of(self.magnitude as f64 / self.sigma());
@@ -265,7 +365,7 @@ impl<const D: usize> Gabor<D> {
     }
 
     /// The mean count per cell (of volume 1 in kernel radii) for `density` per kernel volume.
-    fn per_cell(density: f32) -> f32 {
+    pub(crate) fn per_cell(density: f32) -> f32 {
         (density as f64 / ball_volume(D)) as f32
     }
 
@@ -276,23 +376,29 @@ impl<const D: usize> Gabor<D> {
         (32.0 * ball_volume(D)) as f32
     }
 
+    /// [`with_density`](Self::with_density)'s check.
+    pub(crate) fn check_density(density: f32) -> Result<(), Error> {
+        let max = Self::max_density();
+        if (super::MIN_DENSITY..=max).contains(&density) {
+            Ok(())
+        } else {
+            Err(Error::Density {
+                density,
+                min: super::MIN_DENSITY,
+                max,
+            })
+        }
+    }
+
     /// The same noise at frequency `F₀` cycles per unit.
     ///
     /// # Errors
     ///
-    /// [`Error::Frequency`] unless `0 ≤ F₀ ≤ MAX_FREQUENCY_RATIO · a` (set the bandwidth first
-    /// when raising the frequency far).
-    pub fn with_frequency(mut self, frequency: f32) -> Result<Self, Error> {
-        let max = Self::MAX_FREQUENCY_RATIO * self.bandwidth;
-        if !(0.0..=max).contains(&frequency) {
-            return Err(Error::Frequency {
-                frequency,
-                bandwidth: self.bandwidth,
-                max_ratio: Self::MAX_FREQUENCY_RATIO,
-            });
-        }
-        self.frequency = frequency;
-        Ok(self.derive())
+    /// [`Error::Frequency`] unless `0 ≤ F₀ ≤ MAX_FREQUENCY_RATIO · a` (to raise both far, use
+    /// [`with_spectrum`](Self::with_spectrum)).
+    pub fn with_frequency(self, frequency: f32) -> Result<Self, Error> {
+        let bandwidth = self.bandwidth;
+        self.with_spectrum(frequency, bandwidth)
     }
 
     /// The same noise with bandwidth `a` (the envelope `e^{−π a² |x|²}`; lobes of that width
@@ -302,17 +408,21 @@ impl<const D: usize> Gabor<D> {
     ///
     /// [`Error::Bandwidth`] unless `a` is in `[MIN_BANDWIDTH, MAX_BANDWIDTH]`;
     /// [`Error::Frequency`] if the frequency would exceed `MAX_FREQUENCY_RATIO · a`.
-    pub fn with_bandwidth(mut self, bandwidth: f32) -> Result<Self, Error> {
-        if !(Self::MIN_BANDWIDTH..=Self::MAX_BANDWIDTH).contains(&bandwidth) {
-            return Err(Error::Bandwidth(bandwidth));
-        }
-        if self.frequency > Self::MAX_FREQUENCY_RATIO * bandwidth {
-            return Err(Error::Frequency {
-                frequency: self.frequency,
-                bandwidth,
-                max_ratio: Self::MAX_FREQUENCY_RATIO,
-            });
-        }
+    pub fn with_bandwidth(self, bandwidth: f32) -> Result<Self, Error> {
+        let frequency = self.frequency;
+        self.with_spectrum(frequency, bandwidth)
+    }
+
+    /// The same noise with frequency `F₀` and bandwidth `a` together (so that neither is
+    /// checked against the other's old value).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::Bandwidth`] unless `a` is in `[MIN_BANDWIDTH, MAX_BANDWIDTH]`;
+    /// [`Error::Frequency`] unless `0 ≤ F₀ ≤ MAX_FREQUENCY_RATIO · a`.
+    pub fn with_spectrum(mut self, frequency: f32, bandwidth: f32) -> Result<Self, Error> {
+        Parameters::check_spectrum(frequency, bandwidth)?;
+        self.frequency = frequency;
         self.bandwidth = bandwidth;
         Ok(self.derive())
     }
@@ -325,12 +435,11 @@ impl<const D: usize> Gabor<D> {
     /// [`Error::Direction`] if a component is not finite or the vector is zero (or too small
     /// to normalise).
     pub fn with_direction(mut self, direction: [f32; D]) -> Result<Self, Error> {
-        let length = libm::sqrt(direction.iter().map(|&c| c as f64 * c as f64).sum::<f64>());
-        // Finite components give a finite length; NaN fails the range test.
-        if !direction.iter().all(|c| c.is_finite()) || !(1e-30..).contains(&length) {
-            return Err(Error::Direction);
-        }
-        self.direction = direction.map(|c| (c as f64 / length) as f32);
+        let parameters = Parameters {
+            direction: core::array::from_fn(|a| direction.get(a).copied().unwrap_or(0.0)),
+            ..Parameters::DEFAULT
+        };
+        self.direction = parameters.unit_direction::<D>()?;
         Ok(self.derive())
     }
 
@@ -375,9 +484,7 @@ impl<const D: usize> Gabor<D> {
     ///
     /// [`Error::Magnitude`] unless `|K| ≤ MAX_MAGNITUDE`.
     pub fn with_magnitude(self, magnitude: f32) -> Result<Self, Error> {
-        if !(-Self::MAX_MAGNITUDE..=Self::MAX_MAGNITUDE).contains(&magnitude) {
-            return Err(Error::Magnitude(magnitude));
-        }
+        Parameters::check_magnitude(magnitude)?;
         Ok(Self { magnitude, ..self }.derive())
     }
 
@@ -389,14 +496,7 @@ impl<const D: usize> Gabor<D> {
     ///
     /// [`Error::Density`] unless `density` is in `[MIN_DENSITY, max_density()]`.
     pub fn with_density(self, density: f32) -> Result<Self, Error> {
-        let max = Self::max_density();
-        if !(super::MIN_DENSITY..=max).contains(&density) {
-            return Err(Error::Density {
-                density,
-                min: super::MIN_DENSITY,
-                max,
-            });
-        }
+        Self::check_density(density)?;
         let impulses = Impulses::poisson_checked(Self::per_cell(density), self.impulses.weights());
         Ok(Self { impulses, ..self }.derive())
     }
@@ -468,10 +568,11 @@ impl<const D: usize> Gabor<D> {
         (self.impulses.per_cell() as f64 * ball_volume(D)) as f32
     }
 
-    /// The kernel's radius `r = √(ln 20 / π) / a`, in units: the cells' width.
+    /// The kernel's radius `r = √(ln 20 / π) / a`, in units: the cells' width (`1/r` rounded
+    /// to a multiple of 2⁻¹⁶, the same in every number type).
     #[must_use]
     pub fn radius(&self) -> f64 {
-        RADIUS_TIMES_BANDWIDTH / self.bandwidth as f64
+        1.0 / self.to_cells_exact()
     }
 
     /// The standard deviation of the unscaled sum in cell units, `√(λ E[w²] ½ ∫e²)`

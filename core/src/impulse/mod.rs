@@ -34,6 +34,7 @@ mod gabor;
 mod kernel;
 mod sparse;
 
+pub(crate) use gabor::Parameters as GaborParameters;
 pub use gabor::{Envelope, Gabor, Orientation, RADIUS_TIMES_BANDWIDTH};
 pub use kernel::Kernel;
 pub use sparse::SparseConvolution;

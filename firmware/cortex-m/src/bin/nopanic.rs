@@ -1,5 +1,6 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, batches, integer outputs (`levels`), and the public
+//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, sparse, Wiener and Gabor
+//! noise, batches, integer outputs (`levels`), and the public
 //! helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and `cos_turns`) in I16F16 and f32 on
 //! inputs the optimiser cannot see (`nopanic-spec` proves the runtime descriptions and
 //! `nopanic-text` their text form), and its panic handler calls a function that does not exist.
@@ -13,7 +14,7 @@ use core::panic::PanicInfo;
 use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
-use bandnoise::impulse::{Kernel, SparseConvolution};
+use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution};
 use bandnoise::lattice::{
     CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
 };
@@ -147,6 +148,26 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         .is_ok()
     {
         add(out.get(black_box(9)).copied().unwrap_or(R::ZERO));
+    }
+    // Gabor noise with any variant and envelope (hidden from the optimiser), settings from
+    // inputs it cannot see: sample, gradient and a grid (the shared walk's per-impulse draws).
+    let orientation = black_box(Orientation::Isotropic);
+    let envelope = black_box(Envelope::Truncated);
+    let gabor = Gabor::<3>::new(black_box(8))
+        .with_orientation(orientation)
+        .with_envelope(envelope);
+    if let Ok(g) = gabor.with_spectrum(black_box(3.0), black_box(0.7)) {
+        add(g.sample([p[0], p[1], p[2]]));
+        add(g.sample_with_gradient([p[3], p[1], p[2]]).1[2]);
+    }
+    let gabor = Gabor::<2>::new(black_box(8)).with_orientation(orientation);
+    if let Ok(g) = gabor.with_direction([p[0].to_f32(), p[1].to_f32()]) {
+        if g.fill_grid(&grid, &mut out).is_ok() {
+            add(out.get(black_box(11)).copied().unwrap_or(R::ZERO));
+        }
+    }
+    if let Ok(g) = Gabor::<1>::new(black_box(2)).with_fixed_count(black_box(4)) {
+        add(g.sample([p[2]]));
     }
     let xs = black_box([p[0]; 20]);
     let ys = black_box([p[3]; 20]);
