@@ -22,12 +22,15 @@ if ! (cd tests/e2e && npm ls --depth=0 >/dev/null 2>&1); then
     (cd tests/e2e && npm ci --no-audit --no-fund)
 fi
 
-# The demo's module (web/pkg) and the benchmark page's (web/pkg-bench), in one cargo run.
-cargo build -p bandnoise-wasm -p bandnoise-wasm-bench --profile web --target wasm32-unknown-unknown
-for crate in bandnoise_wasm:pkg bandnoise_wasm_bench:pkg-bench; do
-    name=${crate%%:*} dir=web/${crate#*:}
+# The demo's module (web/pkg), built for size (its budget), and the benchmark page's
+# (web/pkg-bench), built for speed.
+cargo build -p bandnoise-wasm --profile web-demo --target wasm32-unknown-unknown
+cargo build -p bandnoise-wasm-bench --profile web --target wasm32-unknown-unknown
+for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
+    name=${crate%%:*} rest=${crate#*:}
+    dir=web/${rest%%:*} profile=${rest#*:}
     rm -rf "$dir"
-    wasm-bindgen "target/wasm32-unknown-unknown/web/$name.wasm" \
+    wasm-bindgen "target/wasm32-unknown-unknown/$profile/$name.wasm" \
         --target web --out-dir "$dir" --no-typescript
     # The features rustc's wasm32 target emits, plus simd128; not -all, which lets wasm-opt use
     # encodings Chromium does not enable by default.

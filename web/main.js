@@ -28,6 +28,9 @@ const LABELS = {
   mnoise4093: 'Olano mNoise, M = 4093',
   wavelet: 'wavelet, one band (Cook & DeRose)',
   multiband: 'wavelet, multiband (Cook & DeRose)',
+  sparse: 'sparse convolution (Lewis)',
+  wiener: 'Wiener-interpolated (Lewis)',
+  gabor: 'Gabor (Lagae et al.)',
 };
 
 function fillKinds() {
@@ -42,7 +45,11 @@ function params() {
     state.pan[0], state.pan[1], number('time'), period, $('fractal').value,
     number('octaves'), number('lacunarity'), number('gain'),
     new Float32Array(state.bandWeights), $('distribution').value, $('tiling').value,
-    number('density'), $('kernel').value, $('covariance').value, $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
+    number('density'), $('kernel').value, $('covariance').value,
+    number('frequency'), number('bandwidth'),
+    Math.cos(number('angle') * Math.PI / 180), Math.sin(number('angle') * Math.PI / 180),
+    $('orientation').value, $('envelope').value,
+    $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
   );
 }
 

@@ -91,7 +91,7 @@ await test('every noise kind gives a different image', async () => {
   const hashes = new Map();
   // The page lists the noises the wasm module takes from bandnoise's description.
   const kinds = await page.evaluate(() => [...document.getElementById('kind').options].map((o) => o.value));
-  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener']);
+  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener', 'gabor']);
   for (const kind of kinds) {
     await set('kind', kind);
     const s = await canvas('noise');
@@ -132,6 +132,43 @@ await test('wiener noise: the covariance control changes the image', async () =>
   }
   assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
   await set('covariance', 'low-pass');
+});
+
+await test('gabor noise: the spectrum view shows the lobes move with frequency and orientation', async () => {
+  await set('kind', 'gabor');
+  await set('bandwidth', '0.25');
+  // The brightest spectrum pixel away from the centre, as an offset from DC: at zoom 32 on a
+  // 256² frame, F₀ cycles per unit are 8·F₀ bins from DC.
+  const peak = async () => {
+    const { red } = await canvas('spectrum');
+    const side = Math.round(Math.sqrt(red.length));
+    let best = [-1, 0, 0];
+    red.forEach((v, i) => {
+      const x = (i % side) - side / 2, y = Math.floor(i / side) - side / 2;
+      if (x * x + y * y > 9 && v > best[0]) best = [v, x, y];
+    });
+    return [best[1], best[2]];
+  };
+  for (const [frequency, angle, want] of [['1', '0', [8, 0]], ['2', '0', [16, 0]], ['2', '90', [0, 16]], ['1.5', '45', [8.5, 8.5]]]) {
+    await set('frequency', frequency);
+    await set('angle', angle);
+    assert.equal(await message(), '');
+    const [x, y] = await peak();
+    assert.ok(Math.abs(Math.abs(x) - want[0]) <= 1.5 && Math.abs(Math.abs(y) - want[1]) <= 1.5,
+      `F0 ${frequency} at ${angle}°: peak at (${x}, ${y}), expected (±${want[0]}, ±${want[1]})`);
+    await page.screenshot({ path: `${artifacts}/demo-gabor-${frequency}-${angle}.png` });
+  }
+  const anisotropic = await canvas('spectrum');
+  await set('orientation', 'hybrid');
+  assert.notEqual((await canvas('spectrum')).hash, anisotropic.hash, 'the variant changes the spectrum');
+  await page.screenshot({ path: `${artifacts}/demo-gabor-hybrid.png` });
+  await set('frequency', '100');
+  assert.match(await message(), /Gabor frequency 100 must be/);
+  await set('frequency', '1');
+  await set('angle', '0');
+  await set('orientation', 'anisotropic');
+  await set('bandwidth', '0.8');
+  assert.equal(await message(), '');
 });
 
 await test('sparse noise: density and kernel controls change the image', async () => {

@@ -3,7 +3,7 @@
 
 use bandnoise::Error;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
-use bandnoise::impulse::Kernel;
+use bandnoise::impulse::{Envelope, Kernel, Orientation};
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Tiling};
 use bandnoise::wiener::Covariance;
@@ -109,6 +109,21 @@ fn describe(e: Error) -> String {
         Error::NotPeriodic(noise) => {
             format!("{noise} noise is not a lattice noise and cannot be wrapped to a period")
         }
+        Error::Bandwidth(a) => format!(
+            "Gabor bandwidth {} must be finite and in [1/256, 256]",
+            num(a.into())
+        ),
+        Error::Frequency {
+            frequency,
+            bandwidth,
+            max_ratio,
+        } => format!(
+            "Gabor frequency {} must be finite and in [0, {} × bandwidth {}]",
+            num(frequency.into()),
+            num(max_ratio.into()),
+            num(bandwidth.into())
+        ),
+        Error::Direction => "Gabor direction must not be zero".into(),
         Error::Density { density, min, max } => format!(
             "impulse density {} must be finite and in [{}, {}] impulses per kernel volume",
             num(density.into()),
@@ -138,7 +153,10 @@ impl Params {
     /// blended or periodic (used by wavelet and multiband noise, ignored by the others); a
     /// density (impulses per kernel volume) outside the core's range or a kernel other than
     /// cosine or catmull-rom (used by sparse noise, ignored by the others); a covariance other
-    /// than low-pass or band-pass (used by Wiener noise, ignored by the others);
+    /// than low-pass or band-pass (used by Wiener noise, ignored by the others); a Gabor
+    /// frequency, bandwidth or direction the core refuses, an orientation other than
+    /// anisotropic, isotropic or hybrid, an envelope other than hann or truncated (used by
+    /// Gabor noise, ignored by the others);
     /// projection asked for a lattice noise; filtering asked for a lattice noise without a
     /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
     /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
@@ -163,6 +181,12 @@ impl Params {
         density: f64,
         kernel: &str,
         covariance: &str,
+        frequency: f64,
+        bandwidth: f64,
+        direction_x: f64,
+        direction_y: f64,
+        orientation: &str,
+        envelope: &str,
         projected: bool,
         filtered: bool,
         infinite: bool,
@@ -258,9 +282,46 @@ impl Params {
         let density = finite("density", density)?;
         if base.is_impulse() {
             // The core checks the range and says why.
+            spec = spec.with_density(density).map_err(describe)?;
+        }
+        if base == Base::Sparse {
+            // Accepted for sparse noise (refused only for other bases).
+            spec = spec.with_kernel(kernel).unwrap_or(spec);
+        }
+        let orientation = match orientation {
+            "anisotropic" => Orientation::Anisotropic,
+            "isotropic" => Orientation::Isotropic,
+            "hybrid" => Orientation::Hybrid,
+            _ => {
+                return Err(format!(
+                    "orientation must be anisotropic, isotropic or hybrid, not \"{orientation}\""
+                ));
+            }
+        };
+        let envelope = match envelope {
+            "hann" => Envelope::Hann,
+            "truncated" => Envelope::Truncated,
+            _ => {
+                return Err(format!(
+                    "envelope must be hann or truncated, not \"{envelope}\""
+                ));
+            }
+        };
+        let (frequency, bandwidth) = (
+            finite("frequency", frequency)?,
+            finite("bandwidth", bandwidth)?,
+        );
+        let direction = [
+            finite("direction x", direction_x)?,
+            finite("direction y", direction_y)?,
+        ];
+        if base == Base::Gabor {
+            // The core checks the ranges and says why.
             spec = spec
-                .with_kernel(kernel)
-                .and_then(|s| s.with_density(density))
+                .with_spectrum(frequency, bandwidth)
+                .and_then(|s| s.with_direction(&direction))
+                .and_then(|s| s.with_orientation(orientation))
+                .and_then(|s| s.with_envelope(envelope))
                 .map_err(describe)?;
         }
         let covariance = match covariance {

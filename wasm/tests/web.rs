@@ -28,6 +28,11 @@ struct Args<'a> {
     density: f64,
     kernel: &'a str,
     covariance: &'a str,
+    frequency: f64,
+    bandwidth: f64,
+    direction: [f64; 2],
+    orientation: &'a str,
+    envelope: &'a str,
     projected: bool,
     filtered: bool,
     infinite: bool,
@@ -48,6 +53,11 @@ const ARGS: Args = Args {
     density: 10.0,
     kernel: "cosine",
     covariance: "low-pass",
+    frequency: 1.0,
+    bandwidth: 0.8,
+    direction: [1.0, 0.0],
+    orientation: "anisotropic",
+    envelope: "hann",
     projected: false,
     filtered: false,
     infinite: false,
@@ -74,6 +84,12 @@ impl Args<'_> {
             self.density,
             self.kernel,
             self.covariance,
+            self.frequency,
+            self.bandwidth,
+            self.direction[0],
+            self.direction[1],
+            self.orientation,
+            self.envelope,
             self.projected,
             self.filtered,
             self.infinite,
@@ -104,7 +120,7 @@ fn every_noise_renders_and_draws() {
     let mut demo = Demo::new(64).unwrap();
     let ctx = canvas();
     let kinds = bandnoise_wasm::kinds();
-    assert_eq!(kinds.len(), 10, "{kinds:?}");
+    assert_eq!(kinds.len(), 11, "{kinds:?}");
     for kind in &kinds {
         for number in ["f32", "fixed"] {
             demo.render(&params(kind, number).unwrap());
@@ -511,4 +527,106 @@ fn wiener_covariance_changes_the_image() {
     .build()
     .unwrap_err();
     assert!(e.contains("covariance must be"), "{e}");
+}
+
+/// Gabor noise's controls: the spectrum view's lobes sit at the frequency along the direction
+/// and move with them; the variants and the envelope change the image; bad settings are
+/// refused with the core's reason; other noises ignore them.
+#[wasm_bindgen_test]
+fn gabor_lobes_follow_the_controls() {
+    // The brightest spectrum bin outside the centre, as an offset from DC (the view is 64²,
+    // DC at (32, 32)): with zoom 8, F₀ cycles per unit are 8·F₀ bins from DC.
+    let peak = |args: Args| {
+        let mut demo = Demo::new(64).unwrap();
+        demo.render(&args.build().unwrap());
+        demo.draw_spectrum(&canvas()).unwrap();
+        let spectrum = demo.spectrum();
+        let mut best = (0u8, (0i32, 0i32));
+        for (i, &v) in spectrum.iter().enumerate() {
+            let (x, y) = ((i % 64) as i32 - 32, (i / 64) as i32 - 32);
+            if x * x + y * y > 9 && v > best.0 {
+                best = (v, (x, y));
+            }
+        }
+        (best.1, spectrum)
+    };
+    let gabor = Args {
+        kind: "gabor",
+        zoom: 8.0,
+        bandwidth: 0.25,
+        ..ARGS
+    };
+    let ((x, y), along_x) = peak(gabor);
+    assert!(
+        (x.abs() - 8).abs() <= 1 && y.abs() <= 1,
+        "F0 1 along x: ({x}, {y})"
+    );
+    let ((x, y), _) = peak(Args {
+        frequency: 2.0,
+        direction: [0.0, 1.0],
+        ..gabor
+    });
+    assert!(
+        x.abs() <= 1 && (y.abs() - 16).abs() <= 1,
+        "F0 2 along y: ({x}, {y})"
+    );
+    let (_, isotropic) = peak(Args {
+        orientation: "isotropic",
+        ..gabor
+    });
+    assert!(along_x != isotropic, "the orientation changes the spectrum");
+    let (_, truncated) = peak(Args {
+        envelope: "truncated",
+        ..gabor
+    });
+    assert!(along_x != truncated, "the envelope changes the image");
+    for (bad, why) in [
+        (
+            Args {
+                bandwidth: 0.0,
+                ..gabor
+            },
+            "bandwidth",
+        ),
+        (
+            Args {
+                frequency: 100.0,
+                ..gabor
+            },
+            "frequency",
+        ),
+        (
+            Args {
+                direction: [0.0, 0.0],
+                ..gabor
+            },
+            "direction",
+        ),
+        (
+            Args {
+                orientation: "sideways",
+                ..gabor
+            },
+            "orientation must be",
+        ),
+        (
+            Args {
+                envelope: "square",
+                ..gabor
+            },
+            "envelope must be",
+        ),
+    ] {
+        let e = bad.build().unwrap_err();
+        assert!(e.contains(why), "{e}");
+    }
+    // Ignored by the other noises (the same frame).
+    let (_, plain) = peak(ARGS);
+    let (_, other) = peak(Args {
+        frequency: 3.0,
+        direction: [0.0, 1.0],
+        orientation: "isotropic",
+        ..ARGS
+    });
+    assert!(plain == other, "perlin ignores them");
 }
