@@ -1,5 +1,6 @@
-//! What sparse convolution noise costs at each density, so a user can choose, and what
-//! Wiener noise costs with each covariance: ns per sample
+//! What sparse convolution noise costs at each density, so a user can choose, what Wiener
+//! noise costs with each covariance, and what Gabor noise costs in each variant and density
+//! (Tavernier et al.'s fixed counts beside the Poisson form): ns per sample
 //! (point, `f32`) on the off-lattice grid of the peer benchmark, and the ratio to bandnoise's
 //! Perlin noise of the same dimension measured in the same rounds (each round times Perlin
 //! and every configuration one after the other over the same rows, milliseconds apart; the
@@ -9,7 +10,7 @@
 //! once on one row and nothing is printed. Results in `bench/README.md`.
 
 use bandnoise::Noise;
-use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
+use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution, Weights};
 use bandnoise::lattice::Perlin;
 use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise_bench::{LAYOUTS, N, Run, quantile, seconds};
@@ -24,6 +25,7 @@ fn configurations<const D: usize>() -> Vec<(String, Run)>
 where
     SparseConvolution<D>: Noise<f32, D>,
     WienerNoise<D>: Noise<f32, D>,
+    Gabor<D>: Noise<f32, D>,
     Perlin: Noise<f32, D>,
 {
     let layout = LAYOUTS[1];
@@ -72,6 +74,37 @@ where
             layout.point::<_, D>(noise),
         ));
     }
+    let gabor = || Gabor::<D>::new(0);
+    for density in [4.0, 16.0, 64.0] {
+        let noise = gabor().with_density(density).expect("a valid density");
+        all.push((
+            format!("gabor-{D}d anisotropic, {density} per kernel"),
+            layout.point::<_, D>(noise),
+        ));
+    }
+    for orientation in [Orientation::Isotropic, Orientation::Hybrid] {
+        all.push((
+            format!("gabor-{D}d {orientation:?}, 16 per kernel"),
+            layout.point::<_, D>(gabor().with_orientation(orientation)),
+        ));
+    }
+    all.push((
+        format!("gabor-{D}d anisotropic, truncated, 16 per kernel"),
+        layout.point::<_, D>(gabor().with_envelope(Envelope::Truncated)),
+    ));
+    // Tavernier et al. 2019's fast normalised process: the fixed count nearest 16 per kernel.
+    let pi = core::f32::consts::PI;
+    let per_cell = (16.0 / if D == 2 { pi } else { 4.0 / 3.0 * pi }) as u32 + 1;
+    let fixed = gabor().with_fixed_count(per_cell).expect("a valid count");
+    let density = fixed.density();
+    all.push((
+        format!("gabor-{D}d anisotropic, {per_cell} per cell fixed ({density:.1} per kernel)"),
+        layout.point::<_, D>(fixed),
+    ));
+    all.push((
+        format!("gabor-{D}d anisotropic, 16 per kernel, batch"),
+        layout.batch::<_, D>(gabor()),
+    ));
     all
 }
 

@@ -15,8 +15,9 @@
 //! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D,
 //!   and any of them periodic ([`Periodic`](lattice::Periodic)).
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
-//! * [`impulse`]: Lewis's sparse convolution noise: random impulses per cell convolved with a
-//!   kernel, normalised by Campbell's theorem.
+//! * [`impulse`]: Lewis's sparse convolution noise and Lagae et al.'s Gabor noise: random
+//!   impulses per cell convolved with a kernel, normalised by Campbell's theorem.
+//! * [`wiener`]: Lewis's Wiener-interpolated lattice noise.
 //! * [`wavelet`]: Cook and DeRose's wavelet noise: band-limited bands over tiles computed at
 //!   compile time, projected onto surfaces, summed into multiband noise.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
@@ -48,8 +49,9 @@
 //! Every noise takes a `u32` seed, first, in `new` (`MNoise::<M>::seeded` for a modulus other
 //! than Olano's 61). Every `new` is `const` except [`Multiband::new`](wavelet::Multiband::new),
 //! which normalises its band weights at run time, and
-//! [`SparseConvolution::new`](impulse::SparseConvolution::new), which tabulates its Poisson
-//! counts and normalises its variance. How the seed enters:
+//! [`SparseConvolution::new`](impulse::SparseConvolution::new) and
+//! [`Gabor::new`](impulse::Gabor::new), which tabulate their Poisson counts and normalise their
+//! variance, and [`WienerNoise::new`](wiener::WienerNoise::new). How the seed enters:
 //!
 //! | noise | the seed … | seed 0 |
 //! |---|---|---|
@@ -58,7 +60,7 @@
 //! | [`Wavelet`](wavelet::Wavelet) | picks each tile-sized block's orientation (48 in 3D, 8 in 2D) by a hash of the block and the seed | one orientation hash like any other |
 //! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
 //! | [`CellHash`](hash::CellHash) | is mixed into the start of every cell's hash chain | as any other seed |
-//! | [`SparseConvolution`](impulse::SparseConvolution) | is its [`CellHash`](hash::CellHash)'s seed: every cell's impulses change | as any other seed |
+//! | [`SparseConvolution`](impulse::SparseConvolution), [`Gabor`](impulse::Gabor) | is its [`CellHash`](hash::CellHash)'s seed: every cell's impulses change | as any other seed |
 //!
 //! Different seeds give decorrelated noise (tested: |correlation| < 0.05 on a 256² grid).
 //!
@@ -101,7 +103,7 @@ pub use real::{I16F16, Real};
 pub mod prelude {
     pub use crate::batch::Grid;
     pub use crate::fractal::{Fractal, Kind, Octaves};
-    pub use crate::impulse::SparseConvolution;
+    pub use crate::impulse::{Gabor, SparseConvolution};
     pub use crate::lattice::{
         CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
     };

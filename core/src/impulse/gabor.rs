@@ -1,55 +1,6 @@
-//! Gabor noise (Lagae, Lefebvre, Drettakis and Dutré 2009, "Procedural Noise using Sparse
-//! Gabor Convolution"; the survey, Lagae et al. 2010, §3.3, eqs. 7–9), in its random-phase
-//! form (Lagae and Drettakis 2011, "Filtering Solid Gabor Noise", §3.3, as OpenShadingLanguage
-//! implements it):
-//!
-//! ```text
-//! g(x) = K e^{−π a² |x|²} cos(2π F₀ ω·x + φ)          N(x) = Σ_i w_i g_i(x − x_i)
-//! ```
-//!
-//! a Gaussian envelope of inverse width `a` (the bandwidth) times a harmonic of frequency `F₀`
-//! along the unit direction `ω`, with a random phase `φ` per impulse, summed over the random
-//! impulses `x_i` of the [impulse walk](super) (sparse convolution with a Gabor kernel). Its
-//! power spectrum is the kernel's: two Gaussian lobes of width `a` at `±F₀ ω` (eq. 8), so the
-//! three parameters place the noise's energy where the user wants it: principal frequency,
-//! orientation and bandwidth.
-//!
-//! # Variants
-//!
-//! * [`Orientation::Anisotropic`]: every impulse has the noise's direction (the survey's
-//!   anisotropic noise: two lobes).
-//! * [`Orientation::Isotropic`]: each impulse draws its own direction, uniform on the circle
-//!   (2D) or the sphere (3D): the spectrum is a ring (2D) or a shell (3D) of radius `F₀`.
-//! * [`Orientation::Hybrid`] (OpenShadingLanguage's): each impulse's direction is uniform in
-//!   the xy plane: isotropic within every plane `z = const` of 3D noise, unchanging along z
-//!   (in 1D and 2D it is the isotropic variant).
-//!
-//! # Envelope and truncation
-//!
-//! The Gaussian is cut where it falls to 5% of its peak, at `r = √(ln 20 / π) / a` (Lagae et
-//! al. 2009's "kernel radius"); cells are `r` wide, so the `3^D` cells around a point hold
-//! every impulse in reach. [`Envelope::Truncated`] is that kernel, which jumps by 5% of its
-//! peak at `r`: the noise has small discontinuities (the paper's). [`Envelope::Hann`] (the
-//! default) multiplies the Gaussian by Hann's window in `d² = |x|²/r²`, `½ + ½ cos(π d²)`, as
-//! Blender's Gabor texture does: the kernel and the noise are `C¹`, at the price of a slightly
-//! narrower envelope, so lobes somewhat wider than `a` (measured in `tests/tests/gabor.rs`).
-//! Both envelopes are read from a table of `d²` ([`crate::radial`]), the harmonic from
-//! [`Real::cos_turns`].
-//!
-//! # Normalisation
-//!
-//! With random phases `E[cos²] = ½` whatever `F₀` and `ω`, so Campbell's theorem gives the
-//! variance in closed form, `Var N = λ E[w²] · ½ ∫ e(x)² dx` (`λ` impulses per unit volume,
-//! `e` the envelope; the integral is computed at compile time for each envelope), and the noise
-//! is scaled by `K / √Var`: variance `K²`, mean 0, for every frequency, bandwidth, orientation,
-//! density and dimension (the 2009 paper's `(1 + e^{−2πF₀²/a²})` interference term of a
-//! phase-free kernel does not arise).
-//!
-//! Random numbers per impulse, after the walk's position draw (and uniform weight): one 32-bit
-//! draw whose top 16 bits give the phase and whose low 16 bits the angle of an isotropic or
-//! hybrid direction (bin centres `(2k + 1)/2¹⁷` turns: exact in every number type), and in 3D
-//! isotropic noise a second draw whose top 16 bits give the direction's `z` (uniform in
-//! `(−1, 1)`, which makes the direction uniform on the sphere, Archimedes).
+//! Gabor noise (Lagae, Lefebvre, Drettakis and Dutré 2009; the survey, Lagae et al. 2010,
+//! §3.3; random phases as in Lagae and Drettakis 2011, §3.3): [`Gabor`], whose docs give the
+//! kernel, the variants, the envelopes and the normalisation.
 
 use super::{Impulses, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
@@ -58,7 +9,7 @@ use crate::radial::{GAUSSIAN_RATE, Profile, Table, ball_volume, knots, power_in,
 use crate::wavelet::constmath;
 use crate::{Error, I16F16, Noise, NoiseGradient, Real};
 
-/// How the impulses' kernels are oriented (module docs, "Variants").
+/// How the impulses' kernels are oriented ([`Gabor`]'s variants).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Orientation {
     /// Every kernel along the noise's direction: two spectral lobes at `±F₀ ω`.
@@ -72,7 +23,7 @@ pub enum Orientation {
     Hybrid,
 }
 
-/// The kernel's envelope (module docs, "Envelope and truncation").
+/// The kernel's envelope ([`Gabor`]'s envelope and truncation).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Envelope {
     /// The Gaussian times Hann's window in `d²`: `C¹`, 0 at the kernel's radius.
@@ -223,7 +174,62 @@ struct Params<R, const D: usize> {
     phase: R,
 }
 
-/// Gabor noise in `D` dimensions (1 to 3): see the [module docs](self).
+/// Gabor noise in `D` dimensions, 1 to 3 (Lagae, Lefebvre, Drettakis and Dutré 2009,
+/// "Procedural Noise using Sparse Gabor Convolution"; the survey, Lagae et al. 2010, §3.3,
+/// eqs. 7–9), in its random-phase
+/// form (Lagae and Drettakis 2011, "Filtering Solid Gabor Noise", §3.3, as OpenShadingLanguage
+/// implements it):
+///
+/// ```text
+/// g(x) = K e^{−π a² |x|²} cos(2π F₀ ω·x + φ)          N(x) = Σ_i w_i g_i(x − x_i)
+/// ```
+///
+/// a Gaussian envelope of inverse width `a` (the bandwidth) times a harmonic of frequency `F₀`
+/// along the unit direction `ω`, with a random phase `φ` per impulse, summed over the random
+/// impulses `x_i` of the [impulse walk](crate::impulse) (sparse convolution with a Gabor kernel). Its
+/// power spectrum is the kernel's: two Gaussian lobes of width `a` at `±F₀ ω` (eq. 8), so the
+/// three parameters place the noise's energy where the user wants it: principal frequency,
+/// orientation and bandwidth.
+///
+/// # Variants
+///
+/// * [`Orientation::Anisotropic`]: every impulse has the noise's direction (the survey's
+///   anisotropic noise: two lobes).
+/// * [`Orientation::Isotropic`]: each impulse draws its own direction, uniform on the circle
+///   (2D) or the sphere (3D): the spectrum is a ring (2D) or a shell (3D) of radius `F₀`.
+/// * [`Orientation::Hybrid`] (OpenShadingLanguage's): each impulse's direction is uniform in
+///   the xy plane: isotropic within every plane `z = const` of 3D noise, unchanging along z
+///   (in 1D and 2D it is the isotropic variant).
+///
+/// # Envelope and truncation
+///
+/// The Gaussian is cut where it falls to 5% of its peak, at `r = √(ln 20 / π) / a` (Lagae et
+/// al. 2009's "kernel radius"); cells are `r` wide, so the `3^D` cells around a point hold
+/// every impulse in reach. [`Envelope::Truncated`] is that kernel, which jumps by 5% of its
+/// peak at `r`: the noise has small discontinuities (the paper's). [`Envelope::Hann`] (the
+/// default) multiplies the Gaussian by Hann's window in `d² = |x|²/r²`, `½ + ½ cos(π d²)`, as
+/// Blender's Gabor texture does: the kernel and the noise are `C¹`, at the price of a slightly
+/// narrower envelope, so lobes wider than `a` says (by a fifth: measured in
+/// `tests/tests/gabor.rs`). Both envelopes are read from a table of `d²` (65 knots, Q2.30,
+/// cubic Hermite: within 3e-7 of their formulas, [`Envelope::exact`]), the harmonic from
+/// [`Real::cos_turns`].
+///
+/// # Normalisation
+///
+/// With random phases `E[cos²] = ½` whatever `F₀` and `ω`, so Campbell's theorem gives the
+/// variance in closed form, `Var N = λ E[w²] · ½ ∫ e(x)² dx` (`λ` impulses per unit volume,
+/// `e` the envelope; the integral is computed at compile time for each envelope), and the noise
+/// is scaled by `K / √Var`: variance `K²`, mean 0, for every frequency, bandwidth, orientation,
+/// density and dimension (the 2009 paper's `(1 + e^{−2πF₀²/a²})` interference term of a
+/// phase-free kernel does not arise).
+///
+/// Random numbers per impulse, after the walk's position draw (and uniform weight): one 32-bit
+/// draw whose top 16 bits give the phase and whose low 16 bits the angle of an isotropic or
+/// hybrid direction (bin centres `(2k + 1)/2¹⁷` turns: exact in every number type), and in 3D
+/// isotropic noise a second draw whose top 16 bits give the direction's `z` (uniform in
+/// `(−1, 1)`, which makes the direction uniform on the sphere, Archimedes).
+///
+/// # Parameters
 ///
 /// Coordinates are in the user's units: the frequency `F₀` is in cycles per unit, the
 /// bandwidth `a` in the same units' inverse (the envelope is `e^{−π a² |x|²}`). The defaults
@@ -234,7 +240,7 @@ struct Params<R, const D: usize> {
 ///
 /// # Amplitude
 ///
-/// Variance `K²` and mean 0 (module docs, "Normalisation"). Each of the `3^D` cells holds at
+/// Variance `K²` and mean 0 (see [Normalisation](Self#normalisation)). Each of the `3^D` cells holds at
 /// most [`Impulses::cap`] impulses of weight at most 1, and a kernel is at most 1, so
 /// `|N| ≤ 3^D · cap · |K| / σ` ([`amplitude_bound`](Noise::amplitude_bound)): a proved
 /// bound, far above what occurs.
@@ -576,7 +582,7 @@ impl<const D: usize> Gabor<D> {
     }
 
     /// The standard deviation of the unscaled sum in cell units, `√(λ E[w²] ½ ∫e²)`
-    /// (module docs, "Normalisation"), which the noise divides by.
+    /// ([Normalisation](Self#normalisation)), which the noise divides by.
     #[must_use]
     pub fn sigma(&self) -> f64 {
         libm::sqrt(self.impulses.variance(self.envelope.power_of(D)) / 2.0)
@@ -633,6 +639,20 @@ impl<const D: usize> Gabor<D> {
         Params { wave, phase }
     }
 
+    /// Calls `kernel(delta, d², w, params)` for each impulse within reach of `p` (the
+    /// [impulse walk](crate::impulse) in cell units, each impulse's phase and direction drawn).
+    #[inline]
+    fn each_kernel<R: Real>(&self, p: [R; D], kernel: impl FnMut([R; D], R, R, &Params<R, D>)) {
+        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
+        walk(
+            &self.hash,
+            &self.impulses,
+            self.to_cells(p),
+            (self.extra(), prepare),
+            kernel,
+        );
+    }
+
     /// The point in cell units.
     #[inline]
     fn to_cells<R: Real>(&self, p: [R; D]) -> [R; D] {
@@ -656,18 +676,10 @@ impl<R: Real, const D: usize> Noise<R, D> for Gabor<D> {
     fn sample(&self, p: [R; D]) -> R {
         let table = self.envelope.table();
         let mut total = R::ZERO;
-        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
-        let p = self.to_cells(p);
-        walk(
-            &self.hash,
-            &self.impulses,
-            p,
-            (self.extra(), prepare),
-            |delta, d2, w, params| {
-                let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
-                total = total + w.mul_rn(h);
-            },
-        );
+        self.each_kernel(p, |delta, d2, w, params| {
+            let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
+            total = total + w.mul_rn(h);
+        });
         total.mul_rn(self.scale.get()).canonical()
     }
 
@@ -720,26 +732,18 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for Gabor<D> {
         let mut total = R::ZERO;
         let mut gradient = [R::ZERO; D];
         let tau = R::from_f32(core::f32::consts::TAU);
-        let prepare = |rng: &mut CellRng| self.params::<R>(rng);
-        let p = self.to_cells(p);
-        walk(
-            &self.hash,
-            &self.impulses,
-            p,
-            (self.extra(), prepare),
-            |delta, d2, w, params| {
-                let (e, slope) = table.at_with_slope(d2);
-                let t = argument(params, &delta);
-                let (c, s) = (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns());
-                total = total + w.mul_rn(e.mul_rn(c));
-                let radial = w.mul_rn(slope.mul_rn(c));
-                let along = w.mul_rn(e.mul_rn(s)).mul_rn(tau);
-                for ((g, d), k) in gradient.iter_mut().zip(delta).zip(&params.wave) {
-                    let term = (radial + radial).mul_rn(d) - along.saturating_mul(*k);
-                    *g = g.saturating_add(term);
-                }
-            },
-        );
+        self.each_kernel(p, |delta, d2, w, params| {
+            let (e, slope) = table.at_with_slope(d2);
+            let t = argument(params, &delta);
+            let (c, s) = (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns());
+            total = total + w.mul_rn(e.mul_rn(c));
+            let radial = w.mul_rn(slope.mul_rn(c));
+            let along = w.mul_rn(e.mul_rn(s)).mul_rn(tau);
+            for ((g, d), k) in gradient.iter_mut().zip(delta).zip(&params.wave) {
+                let term = (radial + radial).mul_rn(d) - along.saturating_mul(*k);
+                *g = g.saturating_add(term);
+            }
+        });
         let scale = self.scale.get::<R>();
         let chain = scale.saturating_mul(self.to_cells.get());
         (

@@ -1,5 +1,6 @@
 //! Noises made of random impulses convolved with a kernel: Lewis's sparse convolution noise
-//! (Lewis 1989, §4), and the walk over cells and impulses that Gabor noise will share.
+//! (Lewis 1989, §4), Lagae et al.'s Gabor noise (2009; [`Gabor`]), and the walk over cells and
+//! impulses they share.
 //!
 //! # The impulse walk
 //!
