@@ -14,7 +14,7 @@ pub mod led;
 
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
-use bandnoise::impulse::{Envelope, Orientation, Weights};
+use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
 use bandnoise::lattice::TabledPerlin;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
@@ -227,10 +227,11 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     ]
 }
 
-/// Checksums of what is not a noise description: projected sampling, wavelet gradients,
-/// filtering and infinite noise, the cell hash and generator, the kernels' `exp` and `cos`, and
-/// [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 9] = [
+/// Checksums of what is not a noise description: Gabor surface noise, projected sampling,
+/// wavelet gradients, filtering and infinite noise, the cell hash and generator, the kernels'
+/// `exp` and `cos`, and [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 10] = [
+    "gabor surface",
     "multiband projected",
     "varied multiband projected",
     "wavelet gradients",
@@ -258,6 +259,14 @@ fn all<R: Bits>(out: &mut [u32]) {
     for (_, spec, dims, range) in composed() {
         push(spec_checksum::<R>(&spec, dims, range));
     }
+    // Gabor surface noise (isotropic: each impulse's direction turned into the plane).
+    let gabor = Gabor::<3>::new(5).with_orientation(Orientation::Isotropic);
+    let mut f = Fnv::new();
+    for i in 0..POINTS / 4 {
+        let n = point::<R, 3>(i + 1000, 1);
+        f.add(gabor.sample_projected(point::<R, 3>(i, 100), n).bits());
+    }
+    push(f.0);
     let spec = uniform_multiband();
     for tiling in [Tiling::default(), Tiling::Varied] {
         let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution())

@@ -22,6 +22,7 @@ use core::array::from_fn;
 
 use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Kind, Octaves};
+use bandnoise::impulse::Orientation;
 use bandnoise::lattice::Periodic;
 use bandnoise::prelude::*;
 use bandnoise::spec::{Base, Spec};
@@ -427,6 +428,17 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         sweep_noise::<R, 3, _>(text, &n3, rng);
         sweep_gradient::<R, 2, _>(text, &n2, |p| n2.sample_with_gradient(p), rng);
         sweep_gradient::<R, 3, _>(text, &n3, |p| n3.sample_with_gradient(p), rng);
+    }
+    // Gabor surface noise: any normal, each variant.
+    for orientation in [
+        Orientation::Anisotropic,
+        Orientation::Isotropic,
+        Orientation::Hybrid,
+    ] {
+        let gabor = Gabor::<3>::new(4).with_orientation(orientation);
+        let b = ProjectedNoise::<R>::projected_bound(&gabor);
+        let name = &format!("gabor surface {orientation:?}");
+        sweep_projected::<R>(name, |p, n| gabor.sample_projected(p, n), b, rng);
     }
 
     // The error function behind the uniform distribution.

@@ -159,6 +159,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     if let Ok(g) = gabor.with_spectrum(black_box(3.0), black_box(0.7)) {
         add(g.sample([p[0], p[1], p[2]]));
         add(g.sample_with_gradient([p[3], p[1], p[2]]).1[2]);
+        add(g.sample_projected([p[0], p[1], p[2]], [p[3], p[2], p[0]]));
     }
     let gabor = Gabor::<2>::new(black_box(8)).with_orientation(orientation);
     if let Ok(g) = gabor.with_direction([p[0].to_f32(), p[1].to_f32()]) {
