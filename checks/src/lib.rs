@@ -86,6 +86,9 @@ fn checksum<R: Bits, const D: usize>(noise: &impl Noise<R, D>, range: i32) -> u3
 /// wavelet tiles (the `f32` ones would not fit a microcontroller's flash); `u32::MAX` if the
 /// spec does not build in `dims` dimensions (never for the lists below).
 fn spec_checksum<R: Bits>(spec: &Spec, dims: usize, range: i32) -> u32 {
+    // Out of line: inlined, each dimension's built noise took its own stack slot, and the
+    // Cortex-M0's 16 KiB of RAM did not hold them all.
+    #[inline(never)]
     fn one<R: Bits, const D: usize>(spec: &Spec, range: i32) -> u32
     where
         SpecNoise<D, I16Tiles>: Noise<R, D>,
@@ -227,11 +230,12 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     ]
 }
 
-/// Checksums of what is not a noise description: Gabor surface noise, projected sampling,
-/// wavelet gradients, filtering and infinite noise, the cell hash and generator, the kernels'
-/// `exp` and `cos`, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 10] = [
+/// Checksums of what is not a noise description: Gabor surface noise and filtering, projected
+/// sampling, wavelet gradients, filtering and infinite noise, the cell hash and generator, the
+/// kernels' `exp` and `cos`, and [`TabledPerlin`] (Perlin's values through its table).
+const OTHER: [&str; 11] = [
     "gabor surface",
+    "gabor filtered",
     "multiband projected",
     "varied multiband projected",
     "wavelet gradients",
@@ -242,6 +246,26 @@ const OTHER: [&str; 10] = [
     "tabled perlin 2D",
     "tabled perlin 3D",
 ];
+
+/// Gabor surface noise (isotropic: each impulse's direction turned into the plane) and Gabor
+/// noise filtered by a footprint (each kernel filtered analytically). Out of line, for the
+/// Cortex-M0's stack (see [`spec_checksum`]).
+#[inline(never)]
+fn gabor_checksums<R: Bits>() -> [u32; 2] {
+    let gabor = Gabor::<3>::new(5).with_orientation(Orientation::Isotropic);
+    let mut surface = Fnv::new();
+    for i in 0..POINTS / 4 {
+        let n = point::<R, 3>(i + 1000, 1);
+        surface.add(gabor.sample_projected(point::<R, 3>(i, 100), n).bits());
+    }
+    let plane = Gabor::<2>::new(5).with_orientation(Orientation::Isotropic);
+    let mut filtered = Fnv::new();
+    for i in 0..POINTS / 4 {
+        let [dx, dy] = [point::<R, 2>(i + 2000, 1), point::<R, 2>(i + 3000, 1)];
+        filtered.add(plane.sample_filtered(point::<R, 2>(i, 100), dx, dy).bits());
+    }
+    [surface.0, filtered.0]
+}
 
 /// Checksums for every noise in one number type, in a fixed order (see [`names`]).
 fn all<R: Bits>(out: &mut [u32]) {
@@ -259,14 +283,9 @@ fn all<R: Bits>(out: &mut [u32]) {
     for (_, spec, dims, range) in composed() {
         push(spec_checksum::<R>(&spec, dims, range));
     }
-    // Gabor surface noise (isotropic: each impulse's direction turned into the plane).
-    let gabor = Gabor::<3>::new(5).with_orientation(Orientation::Isotropic);
-    let mut f = Fnv::new();
-    for i in 0..POINTS / 4 {
-        let n = point::<R, 3>(i + 1000, 1);
-        f.add(gabor.sample_projected(point::<R, 3>(i, 100), n).bits());
-    }
-    push(f.0);
+    let [surface, filtered] = gabor_checksums::<R>();
+    push(surface);
+    push(filtered);
     let spec = uniform_multiband();
     for tiling in [Tiling::default(), Tiling::Varied] {
         let multi = Multiband::new(spec.seed(), &TILE3_I16, spec.bands(), spec.distribution())

@@ -38,6 +38,8 @@ pub(crate) enum Profile {
     /// The same Gaussian times Hann's window in `s`, `½ + ½ cos(π s)`: 0 with a zero slope at
     /// the rim (`C¹`), support 1.
     GaussianHann,
+    /// Hann's window in `s` alone, `½ + ½ cos(π s)`, support 1 (filtered Gabor kernels).
+    HannWindow,
 }
 
 /// The Gaussian envelope's rate in cell units: `ln 20`, so the envelope is 5% of its peak at
@@ -81,6 +83,11 @@ impl Profile {
             Profile::Wendland => wendland(s),
             Profile::BandPass(d) => band_pass(s, d, band_pass_a1_of(d)),
             Profile::Gaussian => (0.0, 0.0),
+            Profile::HannWindow => {
+                let s = if s > 0.0 { s } else { 0.0 };
+                let (w, dw) = cosine(s * s);
+                (w, 2.0 * s * dw)
+            }
             Profile::GaussianHann => {
                 let s = if s > 0.0 { s } else { 0.0 };
                 let e = exp_neg_f64(GAUSSIAN_RATE * s);

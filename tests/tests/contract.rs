@@ -150,10 +150,10 @@ fn sweep_gradient<R: Special, const D: usize, N: Noise<R, D>>(
     }
 }
 
-/// `Fractal::sample_filtered` with bad points and bad footprints.
-fn sweep_filtered<R: Special, const D: usize, N: Noise<R, D>>(
+/// `sample_filtered` (of a fractal sum, Gabor noise) with bad points and bad footprints.
+fn sweep_filtered<R: Special, const D: usize, F: FilteredNoise<R, D>>(
     name: &str,
-    f: &Fractal<N>,
+    f: &F,
     rng: &mut Rng,
 ) {
     let bound = Noise::<R, D>::amplitude_bound(f);
@@ -439,6 +439,9 @@ fn every_noise<R: Special>(rng: &mut Rng) {
         let b = ProjectedNoise::<R>::projected_bound(&gabor);
         let name = &format!("gabor surface {orientation:?}");
         sweep_projected::<R>(name, |p, n| gabor.sample_projected(p, n), b, rng);
+        let plane = Gabor::<2>::new(4).with_orientation(orientation);
+        let name = &format!("gabor filtered {orientation:?}");
+        sweep_filtered::<R, 2, _>(name, &plane, rng);
     }
 
     // The error function behind the uniform distribution.

@@ -665,3 +665,94 @@ fn surface_noise_has_variance_one_on_any_surface() {
         }
     }
 }
+
+/// Analytic anisotropic filtering: 512² pixels, 0.1 units apart, of Gabor noise whose
+/// frequency (6 cycles per unit: 0.6 per pixel, above the pixels' Nyquist limit of 0.5) a
+/// point sample aliases, at one sample per pixel with the footprint equal to the pixel
+/// spacing, against a 16×16-supersampled box-filtered reference (each pixel the mean of 256
+/// samples over its box): the filtered render's mean squared error is at least 3× lower
+/// than the plain one's (both printed). 4 impulses per kernel keep the 67·10⁶ reference
+/// samples affordable; isotropic (each kernel filtered along its own direction) and
+/// anisotropic at 30° along a stretched footprint's axes.
+#[test]
+fn filtering_brings_a_pixel_closer_to_its_average() {
+    use bandnoise::FilteredNoise;
+    let (side, h, sub) = (512usize, 0.1f64, 16usize);
+    for (orientation, stretch) in [
+        (Orientation::Isotropic, 1.0),
+        (Orientation::Anisotropic, 2.0),
+    ] {
+        let noise = Gabor::<2>::new(3)
+            .with_spectrum(6.0, 2.5)
+            .unwrap()
+            .with_angle(std::f32::consts::FRAC_PI_6)
+            .unwrap()
+            .with_orientation(orientation)
+            .with_density(4.0)
+            .unwrap();
+        // Pixels `h` wide and `stretch · h` tall.
+        let (hx, hy) = (h, h * stretch);
+        let (mut plain, mut filtered) = (0.0, 0.0);
+        for j in 0..side {
+            for i in 0..side {
+                let (x0, y0) = (0.31 + i as f64 * hx, -7.77 + j as f64 * hy);
+                let mut reference = 0.0;
+                for b in 0..sub {
+                    for a in 0..sub {
+                        let p = [
+                            (x0 + (a as f64 + 0.5) / sub as f64 * hx) as f32,
+                            (y0 + (b as f64 + 0.5) / sub as f64 * hy) as f32,
+                        ];
+                        reference += noise.sample(p) as f64;
+                    }
+                }
+                reference /= (sub * sub) as f64;
+                let centre = [(x0 + 0.5 * hx) as f32, (y0 + 0.5 * hy) as f32];
+                let v: f32 = noise.sample(centre);
+                let f: f32 = noise.sample_filtered(centre, [hx as f32, 0.0], [0.0, hy as f32]);
+                plain += (v as f64 - reference).powi(2);
+                filtered += (f as f64 - reference).powi(2);
+            }
+        }
+        let n = (side * side) as f64;
+        let (plain, filtered) = (plain / n, filtered / n);
+        println!(
+            "{orientation:?}, pixels {hx} × {hy}: mean squared error against the 16×16 box \
+             reference: plain {plain:.4}, filtered {filtered:.4} ({:.1}× lower)",
+            plain / filtered
+        );
+        assert!(plain >= 3.0 * filtered, "{plain} {filtered}");
+    }
+}
+
+/// A footprint that shrinks to nothing gives the plain noise: bit for bit below 2⁻²⁴ cell²,
+/// and continuously above (a footprint of 0.01 units, a hundredth of a cycle, moves a sample
+/// by less than 2e-3: the filter's own small effect plus the filtered envelope's `exp`
+/// against the table), both envelopes.
+#[test]
+fn a_vanishing_footprint_is_the_plain_noise() {
+    use bandnoise::FilteredNoise;
+    let mut rng = Rng::from_env(46);
+    for envelope in ENVELOPES {
+        let noise = Gabor::<2>::new(6)
+            .with_envelope(envelope)
+            .with_orientation(Orientation::Isotropic);
+        let mut worst = 0.0f64;
+        for _ in 0..2000 {
+            let p = [rng.f64_in(-50.0, 50.0), rng.f64_in(-50.0, 50.0)];
+            let v: f64 = noise.sample(p);
+            assert_eq!(
+                noise.sample_filtered(p, [0.0; 2], [0.0; 2]).to_bits(),
+                v.to_bits()
+            );
+            assert_eq!(
+                noise.sample_filtered(p, [1e-5, 0.0], [0.0, 1e-5]).to_bits(),
+                v.to_bits()
+            );
+            let tiny = noise.sample_filtered(p, [1e-2, 0.0], [0.0, 1e-2]);
+            worst = worst.max((tiny - v).abs());
+        }
+        println!("{envelope:?}: a footprint of 0.01 moves a sample by at most {worst:.1e}");
+        assert!(worst < 2e-3, "{worst}");
+    }
+}

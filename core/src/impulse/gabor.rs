@@ -239,6 +239,12 @@ struct Params<R, const D: usize> {
 /// 2009's surface noise without set-up), band-limited on the surface where a slice of the
 /// solid noise is not (the impl's docs say how).
 ///
+/// # Filtering
+///
+/// `Gabor<2>` is a [`FilteredNoise`](crate::FilteredNoise): `sample_filtered(p, dpdx, dpdy)`
+/// filters each kernel analytically by the Gaussian of the sample's footprint (Lagae et al.
+/// 2009 §5, anisotropic: the impl's docs say how), so a render needs no supersampling.
+///
 /// # Parameters
 ///
 /// Coordinates are in the user's units: the frequency `F₀` is in cycles per unit, the
@@ -851,6 +857,130 @@ impl<R: Real> ProjectedNoise<R> for Gabor<3> {
         self.amplitude_bound() * gain * 1.001
     }
 }
+
+/// The filter of a sample's footprint, in cell units, as the filtered kernels need it
+/// (Lagae et al. 2009 §5; Lagae and Drettakis 2011, eq. 10): the pixel is a Gaussian of the
+/// footprint box's covariance `Σ = (dx dxᵀ + dy dyᵀ)/12`; with the kernel's envelope
+/// `e^{−½ xᵀ A x}`, `A = 2 ln 20 · I`, and `B = A⁻¹ + Σ`, a filtered kernel is
+/// `amp · e^{−½ δᵀ P δ} cos(2π m·δ + φ)` with `P = B⁻¹`, `m = P A⁻¹ k`,
+/// `amp = e^{−2π² kᵀ(A⁻¹ − A⁻¹ P A⁻¹)k} / √det(I + AΣ)`.
+struct Footprint<R> {
+    /// `P / 2`, the filtered envelope's quadratic form (symmetric: `[p00, p01, p11]`).
+    half_precision: [R; 3],
+    /// `P A⁻¹`, which turns a wave vector into the filtered one (`[m00, m01, m11]`).
+    shift: [R; 3],
+    /// `2π² (A⁻¹ − A⁻¹ P A⁻¹)`, the attenuation's quadratic form (`[q00, q01, q11]`).
+    attenuation: [R; 3],
+    /// `1 / √det(I + AΣ)`.
+    gain: R,
+}
+
+impl<R: Real> Footprint<R> {
+    /// The filter of the footprint `dx`, `dy` in cell units, computed in `f32` (the same
+    /// numbers in every type, as the wavelet bands' footprints are): `None` when it is too
+    /// small to change a kernel (every entry of `Σ` below 2⁻²⁴), so that the caller samples
+    /// the plain noise, bit for bit.
+    fn new(dx: [f32; 2], dy: [f32; 2]) -> Option<Self> {
+        // Non-finite components count as 0; huge ones are capped (a footprint of 2²⁰ kernel
+        // radii leaves nothing of a kernel anyway).
+        let tame = |v: f32| {
+            if v.is_finite() {
+                v.clamp(-1048576.0, 1048576.0)
+            } else {
+                0.0
+            }
+        };
+        let (dx, dy) = (dx.map(tame), dy.map(tame));
+        let sigma = [
+            (dx[0] * dx[0] + dy[0] * dy[0]) / 12.0,
+            (dx[0] * dx[1] + dy[0] * dy[1]) / 12.0,
+            (dx[1] * dx[1] + dy[1] * dy[1]) / 12.0,
+        ];
+        if sigma.iter().all(|s| s.abs() < 1.0 / 16_777_216.0) {
+            return None;
+        }
+        let inv_a = (0.5 / GAUSSIAN_RATE) as f32;
+        let b = [inv_a + sigma[0], sigma[1], inv_a + sigma[2]];
+        // det B ≥ (A⁻¹)² > 0: B is A⁻¹ plus a positive semi-definite matrix.
+        let det = b[0] * b[2] - b[1] * b[1];
+        let p = [b[2] / det, -b[1] / det, b[0] / det];
+        let m = p.map(|x| x * inv_a);
+        let q = [
+            inv_a - inv_a * inv_a * p[0],
+            -inv_a * inv_a * p[1],
+            inv_a - inv_a * inv_a * p[2],
+        ];
+        let pi2 = 2.0 * core::f32::consts::PI * core::f32::consts::PI;
+        let gain = 1.0 / (libm::sqrtf(det) / inv_a);
+        let r = |v: f32| R::from_f32(v);
+        Some(Self {
+            half_precision: p.map(|x| r(0.5 * x)),
+            shift: m.map(r),
+            attenuation: q.map(|x| r(pi2 * x)),
+            gain: r(gain),
+        })
+    }
+
+    /// `xᵀ S y` for the symmetric `S = [s00, s01, s11]`.
+    #[inline]
+    fn form(s: &[R; 3], x: [R; 2], y: [R; 2]) -> R {
+        s[0].mul_rn(x[0]).mul_rn(y[0])
+            + s[1].mul_rn(x[0].mul_rn(y[1]) + x[1].mul_rn(y[0]))
+            + s[2].mul_rn(x[1]).mul_rn(y[1])
+    }
+}
+
+/// Analytic anisotropic filtering (Lagae et al. 2009 §5; the survey §5.2.1): each kernel is a
+/// Gaussian in frequency, and so is the pixel's filter, so the filtered kernel is again a
+/// Gabor kernel, with a wider (anisotropic) envelope, a frequency pulled towards 0 across the
+/// footprint and an amplitude that falls as the footprint covers more of a period ([`Gabor`]'s
+/// `Footprint`, Lagae and Drettakis 2011's eq. 10 in the plane). The pixel is the Gaussian with
+/// the footprint box's covariance, `(dpdx dpdxᵀ + dpdy dpdyᵀ)/12`. Only impulses within the
+/// kernel's radius are summed (the filtered envelope reaches further, but its amplitude falls
+/// faster), and the envelope keeps the kernel's window (Hann's, or the truncation), so a
+/// footprint that shrinks to nothing gives the plain noise: below 2⁻²⁴ cell² it is `sample`,
+/// bit for bit. A footprint with non-finite components counts them as 0.
+///
+/// Against a 16×16-supersampled box-filtered reference, one filtered sample per pixel is many
+/// times closer than a plain one (`tests/tests/gabor.rs`).
+impl<R: Real> crate::FilteredNoise<R, 2> for Gabor<2> {
+    fn sample_filtered(&self, p: [R; 2], dpdx: [R; 2], dpdy: [R; 2]) -> R {
+        let k = self.to_cells.float;
+        let cells = |v: [R; 2]| v.map(|c| c.to_f32() * k);
+        let Some(filter) = Footprint::<R>::new(cells(dpdx), cells(dpdy)) else {
+            return self.sample(p);
+        };
+        let window = match self.envelope {
+            Envelope::Hann => Some(&HANN_WINDOW),
+            Envelope::Truncated => None,
+        };
+        let mut total = R::ZERO;
+        self.each_kernel(p, |delta, d2, w, params| {
+            let k = params.wave;
+            let m = [
+                filter.shift[0].mul_rn(k[0]) + filter.shift[1].mul_rn(k[1]),
+                filter.shift[1].mul_rn(k[0]) + filter.shift[2].mul_rn(k[1]),
+            ];
+            let fade = Footprint::form(&filter.attenuation, k, k).exp_neg();
+            let spread = Footprint::form(&filter.half_precision, delta, delta).exp_neg();
+            let envelope = match window {
+                Some(table) => spread.mul_rn(table.at(d2)),
+                None => spread,
+            };
+            let arg = params.phase + m[0].mul_rn(delta[0]) + m[1].mul_rn(delta[1]);
+            let h = envelope.mul_rn(fade).mul_rn(arg.cos_turns());
+            total = total + w.mul_rn(h);
+        });
+        total
+            .mul_rn(filter.gain)
+            .mul_rn(self.scale.get())
+            .canonical()
+    }
+}
+
+/// Hann's window `½ + ½ cos(π d²)` alone (the filtered kernels' window), 33 knots.
+static HANN_WINDOW: Table = Table::new(Profile::HannWindow, &HANN_WINDOW_KNOTS);
+static HANN_WINDOW_KNOTS: [[i32; 2]; 33] = knots(Profile::HannWindow);
 
 #[cfg(test)]
 mod tests {

@@ -166,6 +166,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         if g.fill_grid(&grid, &mut out).is_ok() {
             add(out.get(black_box(11)).copied().unwrap_or(R::ZERO));
         }
+        add(g.sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[1]]));
     }
     if let Ok(g) = Gabor::<1>::new(black_box(2)).with_fixed_count(black_box(4)) {
         add(g.sample([p[2]]));
