@@ -8,9 +8,10 @@
 //! * the amplitudes approach a Gaussian as the density grows (Kolmogorov–Smirnov distance);
 //! * fixed point follows `f32`.
 
+use bandnoise::Noise;
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
-use bandnoise::{I16F16, Noise};
 use bandnoise_tests::Rng;
+use bandnoise_tests::agree;
 use bandnoise_tests::spectral::{
     self, ks_to_normal, mean_variance, radial_transform, spectral_density,
 };
@@ -197,17 +198,8 @@ fn fixed_point_follows_f32() {
     for kernel in KERNELS {
         let two = SparseConvolution::<2>::new(1).with_kernel(kernel);
         let three = SparseConvolution::<3>::new(1).with_kernel(kernel);
-        let (mut w2, mut w3) = (0.0f32, 0.0f32);
-        for _ in 0..20_000 {
-            let p: [I16F16; 3] = rng.exact_point(200);
-            let f = bandnoise_tests::to_f32(p);
-            let q2: I16F16 = two.sample([p[0], p[1]]);
-            let f2: f32 = two.sample([f[0], f[1]]);
-            w2 = w2.max((q2.to_num::<f32>() - f2).abs());
-            let q3: I16F16 = three.sample(p);
-            let f3: f32 = three.sample(f);
-            w3 = w3.max((q3.to_num::<f32>() - f3).abs());
-        }
+        let w2 = agree::fixed_vs_f32(&two, 20_000, 200, &mut rng);
+        let w3 = agree::fixed_vs_f32(&three, 20_000, 200, &mut rng);
         println!("{kernel:?}: |I16F16 − f32| ≤ {w2:.1e} (2D), {w3:.1e} (3D)");
         assert!(w2 < 2e-3 && w3 < 2e-3, "{kernel:?} {w2} {w3}");
     }
@@ -217,32 +209,13 @@ fn fixed_point_follows_f32() {
 /// kernels), and its value is `sample`'s bit for bit in every number type.
 #[test]
 fn gradient_is_the_derivative() {
-    use bandnoise::NoiseGradient;
     let mut rng = Rng::from_env(21);
     for kernel in KERNELS {
-        let noise = SparseConvolution::<3>::new(4).with_kernel(kernel);
+        let three = SparseConvolution::<3>::new(4).with_kernel(kernel);
         let two = SparseConvolution::<2>::new(4).with_kernel(kernel);
-        let mut worst = 0.0f64;
-        for _ in 0..2000 {
-            let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-50.0, 50.0));
-            let (v, g) = noise.sample_with_gradient(p);
-            assert_eq!(v.to_bits(), noise.sample(p).to_bits());
-            let h = 1e-6;
-            for a in 0..3 {
-                let (mut hi, mut lo) = (p, p);
-                hi[a] += h;
-                lo[a] -= h;
-                let numeric = (noise.sample(hi) - noise.sample(lo)) / (2.0 * h);
-                worst = worst.max((numeric - g[a]).abs());
-            }
-            let q: [I16F16; 2] = [I16F16::from_num(p[0]), I16F16::from_num(p[1])];
-            assert_eq!(two.sample_with_gradient(q).0, two.sample(q));
-            let f = [p[0] as f32, p[1] as f32];
-            assert_eq!(
-                two.sample_with_gradient(f).0.to_bits(),
-                two.sample(f).to_bits()
-            );
-        }
+        let (w3, _) = agree::gradient_error(&three, 2000, 50.0, 1e-6, &mut rng);
+        let (w2, _) = agree::gradient_error(&two, 2000, 50.0, 1e-6, &mut rng);
+        let worst = w2.max(w3);
         println!("{kernel:?}: |analytic − numeric gradient| ≤ {worst:.1e}");
         assert!(worst < 1e-6, "{kernel:?}: {worst}");
     }
@@ -253,58 +226,21 @@ fn gradient_is_the_derivative() {
 /// kernels, Poisson and fixed counts, both weights, f32 and I16F16.
 #[test]
 fn batches_are_sample_bit_for_bit() {
-    use bandnoise::batch::Grid;
-    let configs = |seed| {
-        let base = SparseConvolution::<3>::new(seed);
-        [
-            base.clone(),
-            base.clone()
-                .with_kernel(Kernel::CatmullRom)
-                .with_density(3.0)
-                .unwrap(),
-            base.clone()
-                .with_fixed_count(2)
-                .unwrap()
-                .with_weights(Weights::Uniform),
-        ]
-    };
     let mut rng = Rng::from_env(22);
-    for noise in configs(3) {
-        for step in [0.0737f32, 0.01, 0.3, 1.7] {
-            let origin = [rng.f64_in(-100.0, 100.0) as f32, -5.683, 0.37];
-            let grid = Grid::new(origin, [step, step * 0.7, step], [37, 5, 3]);
-            let mut out = vec![0.0f32; grid.len()];
-            noise.fill_grid(&grid, &mut out).unwrap();
-            for (i, v) in out.iter().enumerate() {
-                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
-                assert_eq!(v.to_bits(), noise.sample(p).to_bits(), "{step} {p:?}");
-            }
-            let q = |x: f32| I16F16::from_num(x);
-            let grid = Grid::new(origin.map(q), [q(step), q(step * 0.7), q(step)], [37, 5, 3]);
-            let mut out = vec![I16F16::ZERO; grid.len()];
-            noise.fill_grid(&grid, &mut out).unwrap();
-            for (i, v) in out.iter().enumerate() {
-                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
-                assert_eq!(*v, noise.sample(p), "{step} {p:?}");
-            }
-        }
-        let xs: Vec<f32> = (0..100).map(|_| rng.f64_in(-1e3, 1e3) as f32).collect();
-        let ys: Vec<f32> = (0..100).map(|_| rng.f64_in(-1e3, 1e3) as f32).collect();
-        let zs: Vec<f32> = (0..100).map(|_| rng.f64_in(-1.0, 1.0) as f32).collect();
-        let mut out = vec![0.0f32; 100];
-        noise.fill_points([&xs, &ys, &zs], &mut out).unwrap();
-        for i in 0..100 {
-            let v: f32 = noise.sample([xs[i], ys[i], zs[i]]);
-            assert_eq!(out[i].to_bits(), v.to_bits());
-        }
+    let base = SparseConvolution::<3>::new(3);
+    let configs = [
+        base.clone(),
+        base.clone()
+            .with_kernel(Kernel::CatmullRom)
+            .with_density(3.0)
+            .unwrap(),
+        base.with_fixed_count(2)
+            .unwrap()
+            .with_weights(Weights::Uniform),
+    ];
+    for noise in &configs {
+        agree::batches_match(noise, &[0.0737, 0.01, 0.3, 1.7], &mut rng);
     }
     // 2D, the default.
-    let noise = SparseConvolution::<2>::new(8);
-    let grid = Grid::new([3.217f32, -5.683], [0.0737, 0.0737], [64, 8]);
-    let mut out = vec![0.0f32; grid.len()];
-    noise.fill_grid(&grid, &mut out).unwrap();
-    for (i, v) in out.iter().enumerate() {
-        let p = grid.point([i % 64, i / 64]);
-        assert_eq!(v.to_bits(), noise.sample(p).to_bits(), "{p:?}");
-    }
+    agree::batches_match(&SparseConvolution::<2>::new(8), &[0.0737], &mut rng);
 }

@@ -17,9 +17,10 @@
 //!   cyclostationarity), against `Σ_j h(x − t_j)²/∫h²`;
 //! * fixed point follows `f32`, the gradient is the derivative, batches are `sample` bit for bit.
 
+use bandnoise::Noise;
 use bandnoise::wiener::{Covariance, WienerNoise};
-use bandnoise::{I16F16, Noise, NoiseGradient};
 use bandnoise_tests::Rng;
+use bandnoise_tests::agree;
 use bandnoise_tests::spectral::{
     compare_spectrum, ks_to_normal, mean_variance, radial_transform, spectral_density,
 };
@@ -207,73 +208,33 @@ fn fixed_point_follows_f32() {
     for covariance in COVARIANCES {
         let two = WienerNoise::<2>::new(1).with_covariance(covariance);
         let three = WienerNoise::<3>::new(1).with_covariance(covariance);
-        let (mut w2, mut w3) = (0.0f32, 0.0f32);
-        for _ in 0..20_000 {
-            let p: [I16F16; 3] = rng.exact_point(200);
-            let f = bandnoise_tests::to_f32(p);
-            let q2: I16F16 = two.sample([p[0], p[1]]);
-            let f2: f32 = two.sample([f[0], f[1]]);
-            w2 = w2.max((q2.to_num::<f32>() - f2).abs());
-            let q3: I16F16 = three.sample(p);
-            let f3: f32 = three.sample(f);
-            w3 = w3.max((q3.to_num::<f32>() - f3).abs());
-        }
+        let w2 = agree::fixed_vs_f32(&two, 20_000, 200, &mut rng);
+        let w3 = agree::fixed_vs_f32(&three, 20_000, 200, &mut rng);
         println!("{covariance:?}: |I16F16 − f32| ≤ {w2:.1e} (2D), {w3:.1e} (3D)");
         assert!(w2 < 2e-3 && w3 < 2e-3, "{covariance:?} {w2} {w3}");
     }
 }
 
 /// The analytic gradient is the derivative (central differences in `f64`), and its value is
-/// `sample`'s bit for bit.
+/// `sample`'s bit for bit in every number type.
 #[test]
 fn gradient_is_the_derivative() {
     let mut rng = Rng::from_env(34);
     for covariance in COVARIANCES {
         let noise = WienerNoise::<3>::new(4).with_covariance(covariance);
-        let mut worst = 0.0f64;
-        for _ in 0..2000 {
-            let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-50.0, 50.0));
-            let (v, g) = noise.sample_with_gradient(p);
-            assert_eq!(v.to_bits(), noise.sample(p).to_bits());
-            let e = 1e-6;
-            for a in 0..3 {
-                let (mut hi, mut lo) = (p, p);
-                hi[a] += e;
-                lo[a] -= e;
-                let numeric = (noise.sample(hi) - noise.sample(lo)) / (2.0 * e);
-                worst = worst.max((numeric - g[a]).abs());
-            }
-            let q = p.map(I16F16::from_num);
-            assert_eq!(noise.sample_with_gradient(q).0, noise.sample(q));
-        }
+        let (worst, _) = agree::gradient_error(&noise, 2000, 50.0, 1e-6, &mut rng);
         println!("{covariance:?}: |analytic − numeric gradient| ≤ {worst:.1e}");
         assert!(worst < 1e-5, "{covariance:?}: {worst}");
     }
 }
 
-/// Grids and scattered points through the batch API are `sample` bit for bit.
+/// Grids (several steps, from random origins) and scattered points through the batch API are
+/// `sample` bit for bit, f32 and I16F16.
 #[test]
 fn batches_are_sample_bit_for_bit() {
-    use bandnoise::batch::Grid;
+    let mut rng = Rng::from_env(35);
     for covariance in COVARIANCES {
         let noise = WienerNoise::<3>::new(3).with_covariance(covariance);
-        for step in [0.0737f32, 0.3, 1.7] {
-            let origin = [-40.3f32, -5.683, 0.37];
-            let grid = Grid::new(origin, [step, step * 0.7, step], [37, 5, 3]);
-            let mut out = vec![0.0f32; grid.len()];
-            noise.fill_grid(&grid, &mut out).unwrap();
-            for (i, v) in out.iter().enumerate() {
-                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
-                assert_eq!(v.to_bits(), noise.sample(p).to_bits(), "{step} {p:?}");
-            }
-            let q = |x: f32| I16F16::from_num(x);
-            let grid = Grid::new(origin.map(q), [q(step), q(step * 0.7), q(step)], [37, 5, 3]);
-            let mut out = vec![I16F16::ZERO; grid.len()];
-            noise.fill_grid(&grid, &mut out).unwrap();
-            for (i, v) in out.iter().enumerate() {
-                let p = grid.point([i % 37, i / 37 % 5, i / 185]);
-                assert_eq!(*v, noise.sample(p), "{step} {p:?}");
-            }
-        }
+        agree::batches_match(&noise, &[0.0737, 0.3, 1.7], &mut rng);
     }
 }
