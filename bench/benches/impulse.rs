@@ -71,7 +71,11 @@ where
         let noise = WienerNoise::<D>::new(0).with_covariance(covariance);
         all.push((
             format!("wiener-{D}d {covariance:?}"),
-            layout.point::<_, D>(noise),
+            layout.point::<_, D>(noise.clone()),
+        ));
+        all.push((
+            format!("wiener-{D}d {covariance:?}, batch"),
+            layout.batch::<_, D>(noise),
         ));
     }
     let gabor = || Gabor::<D>::new(0);

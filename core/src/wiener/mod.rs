@@ -37,6 +37,7 @@
 //! `(b₀ + b₁ + b₂ + b₃ − 510)/512`, an approximately Gaussian value (Irwin-Hall; excess
 //! kurtosis −0.3) with `σ_η² = 4 (256² − 1)/12 / 512²`, exact in every number type.
 
+use crate::batch::{self, LANES};
 use crate::hash::CellHash;
 use crate::hash::chain::ChainHash;
 use crate::radial::Profile;
@@ -459,6 +460,129 @@ impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
 
     fn amplitude_bound(&self) -> f32 {
         WienerNoise::amplitude_bound(self)
+    }
+
+    /// Lanes that differ only along axis 0, over at most [`SPAN`] + 1 cells (a grid row's
+    /// chunk), share their lattice points: each point's value is hashed once for all of them,
+    /// and each lane sums the covariance over the same candidates in the same order as
+    /// [`sample`](Noise::sample) (the candidates out of reach add the covariance's exact 0
+    /// instead of being skipped, which leaves every sum's bits unchanged). Other lanes are
+    /// sampled one by one. Bit-identical to `sample` either way.
+    fn sample_lanes(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) {
+        if !self.row_lanes(p, out) {
+            for (l, o) in out.iter_mut().enumerate() {
+                *o = self.value(batch::lane(p, l));
+            }
+        }
+    }
+}
+
+/// The most cells, beyond the first, that a chunk of lanes may span along axis 0 and still
+/// share its lattice points.
+const SPAN: usize = 3;
+
+impl<const D: usize> WienerNoise<D> {
+    /// [`Noise::sample_lanes`]'s shared path: `false` (writing nothing) unless every axis but
+    /// the first has one coordinate in all lanes and the lanes' cells along axis 0 span at
+    /// most [`SPAN`] + 1 cells.
+    fn row_lanes<R: Real>(&self, p: &[[R; LANES]; D], out: &mut [R; LANES]) -> bool {
+        // Axes past the first: one coordinate (NaN, never equal to itself, goes lane by lane).
+        for axis in p.iter().skip(1) {
+            let first = axis[0];
+            if axis.iter().any(|&x| x != first) {
+                return false;
+            }
+        }
+        let r = self.covariance.radius();
+        let (bits, low) = if r == 1 { (1usize, 0i32) } else { (2, -1) };
+        let points = 1usize << bits;
+        let split = p[0].map(Real::split);
+        let (lo, hi) = split
+            .iter()
+            .fold((i32::MAX, i32::MIN), |(lo, hi), &(c, _)| {
+                (lo.min(c), hi.max(c))
+            });
+        if i64::from(hi) - i64::from(lo) > SPAN as i64 {
+            return false;
+        }
+        // The other axes as the point walk has them: cells, offsets, squared offsets.
+        let mut cells = [[0u32; 4]; D];
+        let mut gaps = [[R::ZERO; 4]; D];
+        for ((axis, cell), gap) in p.iter().zip(&mut cells).zip(&mut gaps).skip(1) {
+            let (c, f) = axis[0].split();
+            for (k, (cell, gap)) in cell.iter_mut().zip(gap.iter_mut()).enumerate() {
+                let o = low + k as i32;
+                let d = f - R::from_i32(o);
+                *cell = c.wrapping_add(o) as u32;
+                *gap = d.mul_rn(d);
+            }
+        }
+        // The values of the box's lattice points: axis-0 cell `b` (from `lo + low`) by the
+        // other axes' digits, first axis slowest (index `rest`).
+        let rest_count = 1usize << (bits * (D - 1));
+        let mut eta = [[R::ZERO; 64]; SPAN + 4];
+        for (b, row) in eta.iter_mut().enumerate().take(SPAN + points) {
+            let start = self
+                .hash
+                .step(self.hash.start(), lo.wrapping_add(low + b as i32) as u32);
+            for (rest, slot) in row.iter_mut().enumerate().take(rest_count) {
+                let mut key = start;
+                for (a, cell) in cells.iter().enumerate().skip(1) {
+                    let digit = (rest >> (bits * (D - 1 - a))) & (points - 1) & 3;
+                    key = self.hash.step(key, cell[digit]);
+                }
+                *slot = value(key);
+            }
+        }
+        let covariance = self.covariance;
+        let rim = R::from_i32((r * r) as i32);
+        // Each lane's axis-0 squared offsets (by offset, then lane) and its cell's place in
+        // the box.
+        let mut gaps0 = [[R::ZERO; LANES]; 4];
+        for (l, &(_, f)) in split.iter().enumerate() {
+            for (k, g) in gaps0.iter_mut().enumerate() {
+                let d = f - R::from_i32(low + k as i32);
+                g[l] = d.mul_rn(d);
+            }
+        }
+        let at: [usize; LANES] = split.map(|(c, _)| (c.wrapping_sub(lo) as usize).min(SPAN));
+        let mut totals = [R::ZERO; LANES];
+        // Candidate by candidate, in the point walk's order, every lane at once: the squared
+        // distances and the covariance over the lanes (a loop that vectorises), then each
+        // lane's value times its lattice point's.
+        for k in 0..points << (bits * (D - 1)) {
+            let d0 = (k >> (bits * (D - 1))) & (points - 1) & 3;
+            let rest = k & (rest_count - 1);
+            let mut s = gaps0[d0].map(|g| R::ZERO + g);
+            for (a, g) in gaps.iter().enumerate().skip(1) {
+                let digit = (k >> (bits * (D - 1 - a))) & (points - 1) & 3;
+                let g = g[digit];
+                for x in s.iter_mut() {
+                    *x = *x + g;
+                }
+            }
+            // Out of every lane's reach: each would add the covariance's exact 0.
+            if s.iter().all(|&x| x >= rim) {
+                continue;
+            }
+            let h = s.map(|s| covariance.at::<R, D>(s));
+            let column: [R; SPAN + 1] = core::array::from_fn(|i| {
+                eta.get(i + d0)
+                    .and_then(|row| row.get(rest))
+                    .copied()
+                    .unwrap_or(R::ZERO)
+            });
+            for ((t, &i), h) in totals.iter_mut().zip(&at).zip(h) {
+                // `at` is at most SPAN (`get` says so to the compiler: no panic path).
+                let eta = column.get(i).copied().unwrap_or(R::ZERO);
+                *t = *t + eta.mul_rn(h);
+            }
+        }
+        let scale = R::from_setting(self.scale, self.scale_fixed);
+        for (o, t) in out.iter_mut().zip(totals) {
+            *o = t.mul_rn(scale).canonical();
+        }
+        true
     }
 }
 
