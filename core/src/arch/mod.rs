@@ -7,6 +7,7 @@
 //! | kernel | targets | fallback |
 //! |---|---|---|
 //! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture) | `None`: the shared kernel of [`lattice`](crate::lattice) |
+//! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`, four lanes at a time) | one lane at a time |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
 //! so the choice changes speed only, never a bit of a result (each kernel's tests compare them).
@@ -34,6 +35,59 @@ use portable as selected;
 // * `PerlinPairs`: a seed's table for the point kernels, built by `const fn` from the doubled
 //   permutation (16 KiB on x86-64, empty where no kernel uses it), and `perlin2_paired`,
 //   `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
+// * `sqrt_lanes(x)`: `Real::sqrt` of each lane (`√x` for `x > 0`, else 0), in place. IEEE
+//   square roots are correctly rounded, so a vector instruction gives libm's bits.
 pub(crate) use selected::{
     PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
+    sqrt_lanes,
 };
+
+#[cfg(test)]
+mod tests {
+    extern crate std;
+    use crate::Real;
+    use crate::batch::LANES;
+    use std::vec;
+
+    /// [`super::sqrt_lanes`] is `Real::sqrt` bit for bit: edge cases (zeros, negatives, NaN,
+    /// infinities, subnormals, the largest value) and a million values spread over every
+    /// binade.
+    #[test]
+    fn sqrt_lanes_is_the_scalar_sqrt() {
+        let edges = [
+            0.0f32,
+            -0.0,
+            -1.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MIN_POSITIVE,
+            1e-45,
+            f32::MAX,
+            1.0,
+            0.25,
+            2.0,
+            3.0,
+            0.999_999_9,
+            1e-30,
+            1e30,
+        ];
+        let mut state = 0x2545_F491u32;
+        let mut batches = vec![edges];
+        for _ in 0..65_536 {
+            batches.push(core::array::from_fn(|_| {
+                state ^= state << 13;
+                state ^= state >> 17;
+                state ^= state << 5;
+                f32::from_bits(state)
+            }));
+        }
+        for x in batches {
+            let mut lanes: [f32; LANES] = x;
+            super::sqrt_lanes(&mut lanes);
+            for (got, v) in lanes.iter().zip(x) {
+                assert_eq!(got.to_bits(), Real::sqrt(v).to_bits(), "{v:e}");
+            }
+        }
+    }
+}

@@ -43,3 +43,11 @@ pub(crate) fn perlin3_paired(
 ) -> Option<f32> {
     None
 }
+
+/// [`Real::sqrt`](crate::Real::sqrt) of each lane, one at a time.
+#[inline]
+pub(crate) fn sqrt_lanes(x: &mut [f32; crate::batch::LANES]) {
+    for v in x.iter_mut() {
+        *v = crate::Real::sqrt(*v);
+    }
+}

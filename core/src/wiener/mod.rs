@@ -37,6 +37,7 @@
 //! `(b₀ + b₁ + b₂ + b₃ − 510)/512`, an approximately Gaussian value (Irwin-Hall; excess
 //! kurtosis −0.3) with `σ_η² = 4 (256² − 1)/12 / 512²`, exact in every number type.
 
+use crate::arch;
 use crate::batch::{self, LANES};
 use crate::hash::CellHash;
 use crate::hash::chain::ChainHash;
@@ -110,6 +111,26 @@ impl Covariance {
         self.evaluate::<R, D, true>(s)
     }
 
+    /// [`at`](Self::at) of each lane, bit for bit: in `f32` the low-pass covariance's square
+    /// roots come four lanes at a time where the target has a vector square root
+    /// ([`arch::sqrt_lanes`]), so the batch loop over lanes vectorises.
+    #[inline]
+    pub(crate) fn at_lanes<R: Real, const D: usize>(self, s: &[R; LANES]) -> [R; LANES] {
+        if self != Covariance::LowPass || !R::BINARY32 {
+            return s.map(|s| self.at::<R, D>(s));
+        }
+        let mut roots = s.map(|s| s.to_f32());
+        arch::sqrt_lanes(&mut roots);
+        let rim = R::from_i32(1);
+        core::array::from_fn(|l| {
+            let s = s[l];
+            if s.is_nan() || s >= rim {
+                return R::ZERO;
+            }
+            low_pass::<R, false>(R::from_f32(roots[l])).0
+        })
+    }
+
     /// The value and, if `SLOPE`, the derivative in `s` (else 0), with `+ − ×` and (low-pass)
     /// one square root, the same operations in every number type. Every factor is below 12
     /// and every product below 500 in magnitude, so the products need no saturation
@@ -122,19 +143,7 @@ impl Covariance {
         }
         let s = if s > R::ZERO { s } else { R::ZERO };
         match self {
-            Covariance::LowPass => {
-                // (1 − d)⁴(4d + 1); d/ds = −10 (1 − d)³.
-                let d = s.sqrt();
-                let e = R::ONE - d;
-                let e3 = e.mul_fraction(e).mul_fraction(e);
-                let value = e3.mul_fraction(e).mul_fraction(d + d + d + d + R::ONE);
-                let slope = if SLOPE {
-                    e3.mul_fraction(R::from_i32(-10))
-                } else {
-                    R::ZERO
-                };
-                (value, slope)
-            }
+            Covariance::LowPass => low_pass::<R, SLOPE>(s.sqrt()),
             Covariance::BandPass => {
                 let [c1, c2, c3] = band_pass_coefficients::<R, D>();
                 let (u, v, w) = (R::ONE - s, R::from_i32(2) - s, R::from_i32(3) - s);
@@ -287,6 +296,21 @@ const fn fixed_of(x: f32) -> I16F16 {
 
 /// `σ_η²`: the variance of a lattice value, `4 (256² − 1)/12 / 512²`.
 pub const VALUE_VARIANCE: f64 = 4.0 * 65_535.0 / 12.0 / 262_144.0;
+
+/// The low-pass covariance (Wendland's `(1 − d)⁴(4d + 1)`) at `d = √s`, and if `SLOPE` its
+/// derivative in `s`, `−10 (1 − d)³` (else 0).
+#[inline]
+fn low_pass<R: Real, const SLOPE: bool>(d: R) -> (R, R) {
+    let e = R::ONE - d;
+    let e3 = e.mul_fraction(e).mul_fraction(e);
+    let value = e3.mul_fraction(e).mul_fraction(d + d + d + d + R::ONE);
+    let slope = if SLOPE {
+        e3.mul_fraction(R::from_i32(-10))
+    } else {
+        R::ZERO
+    };
+    (value, slope)
+}
 
 /// A lattice point's value from its hash: its four bytes summed, centred, over 512.
 #[inline]
@@ -462,7 +486,7 @@ impl<R: Real, const D: usize> Noise<R, D> for WienerNoise<D> {
         WienerNoise::amplitude_bound(self)
     }
 
-    /// Lanes that differ only along axis 0, over at most [`SPAN`] + 1 cells (a grid row's
+    /// Lanes that differ only along axis 0, over at most 4 cells (a grid row's
     /// chunk), share their lattice points: each point's value is hashed once for all of them,
     /// and each lane sums the covariance over the same candidates in the same order as
     /// [`sample`](Noise::sample) (the candidates out of reach add the covariance's exact 0
@@ -565,7 +589,7 @@ impl<const D: usize> WienerNoise<D> {
             if s.iter().all(|&x| x >= rim) {
                 continue;
             }
-            let h = s.map(|s| covariance.at::<R, D>(s));
+            let h = covariance.at_lanes::<R, D>(&s);
             let column: [R; SPAN + 1] = core::array::from_fn(|i| {
                 eta.get(i + d0)
                     .and_then(|row| row.get(rest))
