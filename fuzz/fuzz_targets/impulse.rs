@@ -5,17 +5,19 @@
 //! arbitrary bit patterns as coordinates and seeds, 1D–4D, in f32 and I16F16:
 //! settings are refused for a documented reason or build; samples never panic, are never NaN
 //! or -0.0, lie within the documented bound; the gradient's value is the sample's; the batch
-//! path equals `sample` bit for bit; fixed point follows f32 where the input is exact in both.
+//! path equals `sample` bit for bit; fixed point follows f32 where the input is exact in both;
+//! Gabor noise's surface sampling and filtering stay within their bounds for any normal and
+//! footprint (filtering symmetric in the footprint's two vectors).
 #![no_main]
 
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
 use bandnoise::impulse::{
-    Envelope, Kernel, MAX_FIXED, MIN_DENSITY, Orientation, RADIUS_TIMES_BANDWIDTH, Weights,
+    Envelope, Gabor, Kernel, MAX_FIXED, MIN_DENSITY, Orientation, RADIUS_TIMES_BANDWIDTH, Weights,
 };
 use bandnoise::spec::{Base, Spec};
 use bandnoise::wiener::Covariance;
-use bandnoise::{Error, I16F16, Noise, NoiseGradient};
+use bandnoise::{Error, FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
@@ -253,4 +255,76 @@ fuzz_target!(|input: Input| {
     dim::<2>(&spec, floats, fixed, exact);
     dim::<3>(&spec, floats, fixed, exact);
     dim::<4>(&spec, floats, fixed, exact);
+    if base == Base::Gabor {
+        surface_and_filtered(&spec, floats, fixed);
+    }
 });
+
+/// Gabor noise's surface sampling (any normal) and filtering (any footprint), f32 and
+/// I16F16: a value within the bound, never NaN or −0.0; filtering symmetric in its two
+/// footprint vectors.
+fn surface_and_filtered(spec: &Spec, floats: [f32; 4], fixed: [I16F16; 4]) {
+    let (f0, a) = spec.spectrum();
+    let d = spec.direction();
+    let typed = |dims: usize| {
+        let mut direction = [0.0f32; 3];
+        direction[..dims].copy_from_slice(&d[..dims]);
+        (Gabor::<3>::new(spec.seed()).with_spectrum(f0, a), direction)
+    };
+    let (three, direction) = typed(3);
+    let three = three
+        .expect("checked by the spec")
+        .with_orientation(spec.orientation())
+        .with_envelope(spec.envelope())
+        .with_weights(spec.weights());
+    if let Ok(g) = three.with_direction(direction) {
+        let bound = ProjectedNoise::<f32>::projected_bound(&g);
+        let p = [floats[0], floats[1], floats[2]];
+        let n = [floats[3], floats[1], floats[0]];
+        let v: f32 = g.sample_projected(p, n);
+        assert!(
+            !v.is_nan() && v.abs() <= bound,
+            "{spec} surface {p:?} {n:?}: {v}"
+        );
+        assert_ne!(v.to_bits(), (-0.0f32).to_bits());
+        let q = [fixed[0], fixed[1], fixed[2]];
+        let m = [fixed[3], fixed[1], fixed[0]];
+        let w: I16F16 = g.sample_projected(q, m);
+        assert!(
+            w.to_num::<f32>().abs() <= bound,
+            "{spec} surface {q:?} {m:?}: {w}"
+        );
+    }
+    let two = Gabor::<2>::new(spec.seed())
+        .with_spectrum(f0, a)
+        .expect("checked by the spec")
+        .with_orientation(spec.orientation())
+        .with_envelope(spec.envelope())
+        .with_weights(spec.weights());
+    if let Ok(g) = two.with_direction([d[0], d[1]]) {
+        let bound = Noise::<f32, 2>::amplitude_bound(&g);
+        let (p, dx, dy) = (
+            [floats[0], floats[1]],
+            [floats[2], floats[3]],
+            [floats[1], floats[2]],
+        );
+        let v: f32 = g.sample_filtered(p, dx, dy);
+        assert!(
+            !v.is_nan() && v.abs() <= bound,
+            "{spec} filtered {p:?} {dx:?} {dy:?}: {v}"
+        );
+        assert_ne!(v.to_bits(), (-0.0f32).to_bits());
+        assert_eq!(v.to_bits(), g.sample_filtered(p, dy, dx).to_bits());
+        let (q, qx, qy) = (
+            [fixed[0], fixed[1]],
+            [fixed[2], fixed[3]],
+            [fixed[1], fixed[2]],
+        );
+        let w: I16F16 = g.sample_filtered(q, qx, qy);
+        assert!(
+            w.to_num::<f32>().abs() <= bound,
+            "{spec} filtered {q:?}: {w}"
+        );
+        assert_eq!(w, g.sample_filtered(q, qy, qx));
+    }
+}

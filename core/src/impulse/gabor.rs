@@ -901,14 +901,24 @@ impl<R: Real> Footprint<R> {
         }
         let inv_a = (0.5 / GAUSSIAN_RATE) as f32;
         let b = [inv_a + sigma[0], sigma[1], inv_a + sigma[2]];
-        // det B ≥ (A⁻¹)² > 0: B is A⁻¹ plus a positive semi-definite matrix.
-        let det = b[0] * b[2] - b[1] * b[1];
-        let p = [b[2] / det, -b[1] / det, b[0] / det];
+        // det B = (A⁻¹)² + A⁻¹ tr Σ + det Σ, and det Σ = (dx × dy)²/144: every term is at
+        // least 0, so det B ≥ (A⁻¹)² whatever the rounding (`b₀b₂ − b₁²` cancels
+        // catastrophically for a long, thin footprint; found by the fuzz target `impulse`).
+        let cross = dx[0] * dy[1] - dx[1] * dy[0];
+        let det = inv_a * inv_a + inv_a * (sigma[0] + sigma[2]) + cross * cross / 144.0;
+        // P = B⁻¹ lies between 0 and A = 2 ln 20 · I: its entries within ±A, its diagonal
+        // at least 0 (clamped against rounding).
+        let top = (2.0 * GAUSSIAN_RATE) as f32;
+        let p = [
+            (b[2] / det).clamp(0.0, top),
+            (-b[1] / det).clamp(-top, top),
+            (b[0] / det).clamp(0.0, top),
+        ];
         let m = p.map(|x| x * inv_a);
         let q = [
-            inv_a - inv_a * inv_a * p[0],
+            (inv_a - inv_a * inv_a * p[0]).max(0.0),
             -inv_a * inv_a * p[1],
-            inv_a - inv_a * inv_a * p[2],
+            (inv_a - inv_a * inv_a * p[2]).max(0.0),
         ];
         let pi2 = 2.0 * core::f32::consts::PI * core::f32::consts::PI;
         let gain = 1.0 / (libm::sqrtf(det) / inv_a);
@@ -921,12 +931,16 @@ impl<R: Real> Footprint<R> {
         })
     }
 
-    /// `xᵀ S y` for the symmetric `S = [s00, s01, s11]`.
+    /// `xᵀ S y` for the symmetric `S = [s00, s01, s11]`. The sum saturates in fixed point:
+    /// the attenuation's form over a wave vector of 62 turns per radius reaches 4·10⁴, beyond
+    /// I16F16, where `e^{−x}` is 0 anyway (found by the fuzz target `impulse`).
     #[inline]
     fn form(s: &[R; 3], x: [R; 2], y: [R; 2]) -> R {
-        s[0].mul_rn(x[0]).mul_rn(y[0])
-            + s[1].mul_rn(x[0].mul_rn(y[1]) + x[1].mul_rn(y[0]))
-            + s[2].mul_rn(x[1]).mul_rn(y[1])
+        let cross = s[1].saturating_mul(x[0].mul_rn(y[1]) + x[1].mul_rn(y[0]));
+        s[0].mul_rn(x[0])
+            .saturating_mul(y[0])
+            .saturating_add(cross)
+            .saturating_add(s[2].mul_rn(x[1]).saturating_mul(y[1]))
     }
 }
 
