@@ -14,6 +14,8 @@
 //!   cell's own random numbers.
 //! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D,
 //!   and any of them periodic ([`Periodic`](lattice::Periodic)).
+//! * [`simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D, continuous, with its
+//!   analytic gradient.
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
 //! * [`impulse`]: Lewis's sparse convolution noise and Lagae et al.'s Gabor noise: random
 //!   impulses per cell convolved with a kernel, normalised by Campbell's theorem.
@@ -55,7 +57,7 @@
 //!
 //! | noise | the seed … | seed 0 |
 //! |---|---|---|
-//! | [`Perlin`](lattice::Perlin), [`TabledPerlin`](lattice::TabledPerlin), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
+//! | [`Perlin`](lattice::Perlin), [`TabledPerlin`](lattice::TabledPerlin), [`Simplex`](simplex::Simplex), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
 //! | [`MNoise`](lattice::MNoise) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
 //! | [`Wavelet`](wavelet::Wavelet) | picks each tile-sized block's orientation (48 in 3D, 8 in 2D) by a hash of the block and the seed | one orientation hash like any other |
 //! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
@@ -90,6 +92,7 @@ pub mod levels;
 mod noise;
 mod radial;
 mod real;
+pub mod simplex;
 pub mod spec;
 mod special;
 pub mod wavelet;
@@ -107,6 +110,7 @@ pub mod prelude {
     pub use crate::lattice::{
         CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
     };
+    pub use crate::simplex::Simplex;
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{
         FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,

@@ -60,6 +60,14 @@ pub(crate) mod sealed {
         /// The bits of `self` as I16F16 (nearest, saturating; NaN is 0), for the integer
         /// outputs of [`levels`](crate::levels).
         fn fixed_bits(self) -> i32;
+        /// The simplex lattice's skew (Perlin 2001; Gustavson 2005, "skewing"): each axis's
+        /// `x_a + F·Σx`, split into its cell and its fraction in `[0, 1)` as
+        /// [`split`](crate::Real::split) does, for `F = skew · 2⁻³¹` (`0 ≤ skew < 2³¹`).
+        /// Floats compute `Σx` left to right, `s = Σx · F` and `x_a + s` in the type (a
+        /// non-finite sum samples cell 0, as `split` does). Fixed point computes the skewed
+        /// coordinate exactly to 2⁻¹⁶ in 64-bit integers (`⌊Σx·F⌋` in its bits), so no
+        /// coordinate overflows: a skewed cell beyond I16F16's range is still a cell.
+        fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]);
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -110,6 +118,21 @@ pub(crate) mod sealed {
                 fn from_setting(f: f32, _: I16F16) -> Self {
                     f as $t
                 }
+                #[inline]
+                fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]) {
+                    use crate::Real;
+                    let mut sum = 0.0;
+                    for x in p {
+                        sum += x;
+                    }
+                    let s = sum * <$t>::from_ratio(skew, 31);
+                    let mut cell = [0; D];
+                    let mut frac = [0.0; D];
+                    for a in 0..D {
+                        (cell[a], frac[a]) = (p[a] + s).split();
+                    }
+                    (cell, frac)
+                }
             }
         };
     }
@@ -157,6 +180,24 @@ pub(crate) mod sealed {
         #[inline]
         fn fixed_bits(self) -> i32 {
             self.to_bits()
+        }
+        #[inline]
+        fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]) {
+            // |Σ bits| < 2³³ and skew < 2³¹: the product fits i64.
+            let mut sum = 0i64;
+            for x in p {
+                sum += i64::from(x.to_bits());
+            }
+            let s = (sum * i64::from(skew)) >> 31;
+            let mut cell = [0; D];
+            let mut frac = [I16F16::ZERO; D];
+            for a in 0..D {
+                let v = i64::from(p[a].to_bits()) + s;
+                // |v| < 2³⁴: the cell fits i32 without wrapping.
+                cell[a] = (v >> 16) as i32;
+                frac[a] = I16F16::from_bits((v & 0xFFFF) as i32);
+            }
+            (cell, frac)
         }
     }
 }

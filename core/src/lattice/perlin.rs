@@ -60,6 +60,13 @@ impl Perlin {
         }
     }
 
+    /// The hash chain, for the noises that hash Perlin's way on other lattices (simplex
+    /// noise).
+    #[inline]
+    pub(crate) fn chain(&self) -> &Doubled {
+        &self.p
+    }
+
     /// The doubled permutation, for the target kernels of [`arch`].
     #[inline]
     pub(crate) fn doubled(&self) -> &[u8; 512] {

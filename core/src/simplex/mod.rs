@@ -1,0 +1,239 @@
+//! Simplex noise (Perlin 2001, "Noise hardware", and his patent US 6,867,776, expired in
+//! January 2022; as explained by Gustavson, "Simplex noise demystified", 2005).
+//!
+//! Gradient noise on the simplicial lattice: `D + 1` corners per sample instead of `2ᴰ`, each
+//! contributing a radially symmetric kernel `(r² − |d|²)⁴ (g·d)` that vanishes beyond `r`, with
+//! no interpolation between corners. The lattice is the integer lattice *skewed* along the main
+//! diagonal (`x_a + F·Σx`, `F = (√(D+1) − 1)/D`): a skewed unit cube splits into `D!`
+//! simplices, and the one holding the point follows from the order of its fractions
+//! (Gustavson's "rank" method). Offsets are *unskewed* by `G = (1 − 1/√(D+1))/D` from the
+//! fractions, so after the skew every computation works with numbers in `[−2, 2]` whatever
+//! the coordinate (fixed point cannot overflow).
+//!
+//! **The falloff radius is the one that makes the noise continuous.** Gustavson's reference
+//! code uses `r² = 0.6` in 3D and 4D, wider than the distance from some simplex faces to the
+//! opposite corner, so a corner's kernel is cut while it is still non-zero and the noise jumps
+//! across those faces (Gustavson's own correction, simplex-noise.js #9; webgl-noise narrowed
+//! its 4D radius in 2025 for the same reason). bandnoise uses `r² = ½` in 2D–4D, the height of
+//! the 2D simplex, and the kernel reaches zero with its first three derivatives at `r`, so the
+//! noise is C² everywhere. `tests/tests/simplex.rs` measures the largest jump across simplex
+//! faces for both radii. In 1D the "simplices" are the unit cells and `r = 1`, Gustavson's 1D
+//! noise.
+//!
+//! **Hash and gradients** are [`Perlin`](crate::lattice::Perlin)'s: the seed's permutation
+//! folded over a corner's cell with x innermost (`p[p[p[x] + y] + z]`, each coordinate mod
+//! 256, so the noise repeats every 256 cells along each skewed lattice axis), 1D slopes
+//! `±¼ … ±1`, the 12 cube edges in 3D (Perlin's `grad`, as Gustavson's `grad3`), their
+//! projections onto the plane in 2D, the 32 tesseract edges in 4D (Gustavson's `grad4`).
+//! Dot products with gradient components in `{−1, 0, 1}` are additions.
+//!
+//! **No periodic variant**: the simplicial lattice's periods lie along the skewed axes, not
+//! along x and y, so a rectangle of simplex noise cannot be tiled seamlessly by wrapping the
+//! cells as [`Periodic`](crate::lattice::Periodic) does; periodic simplex noise needs another
+//! lattice (Gustavson & McEwan 2022, psrdnoise: a stretched hexagonal lattice in 2D).
+//!
+//! # Examples
+//!
+//! ```
+//! use bandnoise::{I16F16, Noise, NoiseGradient, simplex::Simplex};
+//!
+//! let noise = Simplex::new(7);
+//! let v: f32 = noise.sample([0.3, 4.7]);
+//! assert!(v.abs() <= noise.amplitude_bound::<2>());
+//! // The gradient comes with the same value, bit for bit.
+//! let (w, g): (f32, [f32; 2]) = noise.sample_with_gradient([0.3, 4.7]);
+//! assert_eq!(v.to_bits(), w.to_bits());
+//! // Fixed point follows f32 closely.
+//! let q: I16F16 = noise.sample([I16F16::from_num(0.3), I16F16::from_num(4.7)]);
+//! assert!((q.to_num::<f32>() - v).abs() < 1e-3);
+//! # let _ = g;
+//! ```
+
+use crate::Real;
+use crate::hash::chain::{self, ChainHash, Doubled, Order};
+use crate::lattice::{Lattice, Perlin};
+
+/// Simplex noise in 1 to 4 dimensions, continuous (C²) with its analytic gradient.
+///
+/// * **Lattice**: Perlin's simplices (the skewed integer lattice, module docs); 1D: the
+///   integer cells.
+/// * **Kernel**: `(1 − |d|²/r²)⁴ (g·d)` per corner, `r² = ½` (1D: `r² = 1`), scaled so the
+///   largest value is 1.
+/// * **Hash and gradients**: [`Perlin`]'s permutation for the seed (seed 0 is Perlin's 2002
+///   table) and his gradient sets (module docs).
+/// * **Range**: `|n| ≤ 1`, measured: the largest value over all gradient choices, found by a
+///   search over the simplex (`tests/tests/simplex.rs`; it is a single corner's peak in 3D and
+///   4D, two corners' in 1D and three in 2D) sets the scale; [`Noise::amplitude_bound`] adds
+///   2⁻¹⁰ for rounding.
+/// * **Bad input**: a non-finite coordinate, or coordinates whose sum overflows, sample the
+///   origin's cell (as [`Real::split`]); fixed point takes any coordinate exactly.
+///
+/// [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Simplex {
+    perlin: Perlin,
+}
+
+impl Simplex {
+    /// Simplex noise for `seed`. `const`, so `static NOISE: Simplex = Simplex::new(7);` builds
+    /// the permutation at compile time.
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        Self {
+            perlin: Perlin::new(seed),
+        }
+    }
+}
+
+impl Default for Simplex {
+    fn default() -> Self {
+        Self::new(0)
+    }
+}
+
+/// The skew `F = (√(D+1) − 1)/D` in 2⁻³¹ units, by dimension (1D: no skew).
+const SKEW: [i32; 5] = [0, 0, 786_033_569, 715_827_883, 663_608_942];
+
+/// `G = (1 − 1/√(D+1))/D` in 2⁻³¹ units, by dimension: the `j`-th corner of a simplex lies
+/// `j·G` back along the main diagonal. The corners' offsets use exact multiples of this one
+/// rounded `G` (a separately rounded `j·G` would place a corner differently in the two cells
+/// that share it, a jump of 10⁻⁹ across cell faces).
+const UNSKEW: [i32; 5] = [0, 0, 453_816_693, 357_913_941, 296_774_941];
+
+/// The scale `⌊2¹⁶ / max⌋ · 2⁻¹⁶` that makes the largest value 1, by dimension: `max` is the
+/// largest `Σ (1 − |d|²/r²)⁴ (g·d)` over points and gradient choices (1D: 81/256 at a cell's
+/// middle; searched in 2D–4D, `tests/tests/simplex.rs`).
+const SCALE: [i32; 5] = [0, 207_126, 287_326, 314_903, 257_137];
+
+/// The simplex holding a point: its first cell, the unskewed offset from that corner, and the
+/// rank of each axis's fraction (the order in which the walk to the far corner steps the axes).
+struct Located<R, const D: usize> {
+    cell: [i32; D],
+    offset: [R; D],
+    rank: [usize; D],
+}
+
+#[inline]
+fn locate<R: Real, const D: usize>(p: [R; D]) -> Located<R, D> {
+    let (cell, u) = if D == 1 {
+        let (c, f) = p[0].split();
+        ([c; D], [f; D])
+    } else {
+        R::skew_split(p, SKEW[D])
+    };
+    // Σu < D and G < ¼: the product is below 1.
+    let mut sum = R::ZERO;
+    for x in u {
+        sum = sum + x;
+    }
+    let back = sum.mul_fraction(R::from_ratio(UNSKEW[D], 31));
+    let offset = u.map(|x| x - back);
+    // Gustavson's ranks: the axis with the largest fraction is stepped first (ties go to the
+    // later axis; a tie is a simplex face, where both choices give the same value).
+    let mut rank = [0; D];
+    for a in 0..D {
+        for b in a + 1..D {
+            if u[a] > u[b] {
+                rank[a] += 1;
+            } else {
+                rank[b] += 1;
+            }
+        }
+    }
+    Located { cell, offset, rank }
+}
+
+/// `1/r²` as a shift: `r² = ½` in 2D–4D, 1 in 1D.
+const fn inverse_radius_shift(dims: usize) -> u32 {
+    if dims == 1 { 0 } else { 1 }
+}
+
+/// The value (and with `GRADIENT`, the gradient) of simplex noise at `p`.
+#[inline]
+fn simplex<R: Real, const D: usize, const GRADIENT: bool>(noise: &Simplex, p: [R; D]) -> (R, [R; D])
+where
+    Perlin: Lattice<D>,
+{
+    let Located { cell, offset, rank } = locate(p);
+    let start = cell.map(Doubled::reduce);
+    let shift = inverse_radius_shift(D);
+    let mut value = R::ZERO;
+    let mut gradient = [R::ZERO; D];
+    for j in 0..=D {
+        // The j-th corner: one step along each of the j axes ranked highest.
+        // j·G < 2³¹: exact in every type's precision of 2⁻³¹ units.
+        let diagonal = R::from_ratio(UNSKEW[D] * j as i32, 31);
+        let mut corner = [0u32; D];
+        let mut d = [R::ZERO; D];
+        for a in 0..D {
+            let step = u32::from(rank[a] + j >= D);
+            corner[a] = start[a] + step;
+            d[a] = offset[a] + diagonal;
+            if step == 1 {
+                d[a] = d[a] - R::ONE;
+            }
+        }
+        // |d| < 2 per axis: the squares and their sum stay in range.
+        let mut q = R::ZERO;
+        for x in d {
+            q = q + x.mul_fraction(x);
+        }
+        // τ = 1 − |d|²/r², exact (a doubling); the corner contributes where τ > 0.
+        let mut tau = R::ONE - q;
+        if shift == 1 {
+            tau = tau - q;
+        }
+        if tau <= R::ZERO {
+            continue;
+        }
+        let h = chain::cell(Order::XFirst, 0, corner, |h, c| {
+            noise.perlin.chain().step(h, c)
+        });
+        let dot = Lattice::<D>::dot(&noise.perlin, h, &d);
+        let tau2 = tau.mul_fraction(tau);
+        let tau4 = tau2.mul_fraction(tau2);
+        value = value + tau4.mul_rn(dot);
+        if GRADIENT {
+            // ∂/∂x [τ⁴ (g·d)] = τ⁴ g − 8τ³ (g·d) d / r²: with r² = ½, 16τ³ (g·d) d.
+            let g = Lattice::<D>::gradient::<R>(&noise.perlin, h);
+            let tau3 = tau2.mul_fraction(tau);
+            // |g·d| < 4, so 8·τ³(g·d)·2 stays within ±64.
+            let mut radial = tau3.mul_rn(dot);
+            for _ in 0..3 + shift {
+                radial = radial + radial;
+            }
+            for a in 0..D {
+                gradient[a] = gradient[a] + tau4.mul_rn(g[a]) - radial.mul_rn(d[a]);
+            }
+        }
+    }
+    let scale = R::from_ratio(SCALE[D], 16);
+    (
+        value.mul_rn(scale).canonical(),
+        gradient.map(|g| g.mul_rn(scale).canonical()),
+    )
+}
+
+macro_rules! simplex_impls {
+    ($($d:literal),*) => {$(
+        impl<R: Real> crate::Noise<R, $d> for Simplex {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                simplex::<R, $d, false>(self, p).0
+            }
+            fn amplitude_bound(&self) -> f32 {
+                1.0 + crate::lattice::ROUNDING
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Simplex {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                simplex::<R, $d, true>(self, p)
+            }
+        }
+    )*};
+}
+
+simplex_impls!(1, 2, 3, 4);
+crate::noise::inherent_amplitude_bound!(Simplex, []);
