@@ -31,6 +31,7 @@ const LABELS = {
   sparse: 'sparse convolution (Lewis)',
   wiener: 'Wiener-interpolated (Lewis)',
   gabor: 'Gabor (Lagae et al.)',
+  simplex: 'simplex (Perlin 2001, Gustavson)',
 };
 
 function fillKinds() {

@@ -14,6 +14,7 @@ use bandnoise::batch::Grid;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
+use bandnoise::simplex::Simplex;
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
 
@@ -59,7 +60,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 15] = [
+pub const FUNCTIONS: [&str; 17] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -75,6 +76,8 @@ pub const FUNCTIONS: [&str; 15] = [
     "fbm6-perlin-3d",
     "sparse-2d",
     "sparse-3d",
+    "simplex-2d",
+    "simplex-3d",
 ];
 
 /// Who computes it (a column of the table). The first two are bandnoise.
@@ -227,6 +230,38 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("sparse-2d", "bandnoise-batch") => l.batch::<_, 2>(SparseConvolution::<2>::new(0)),
         ("sparse-3d", "bandnoise") => l.point::<_, 3>(sparse3()),
         ("sparse-3d", "bandnoise-batch") => l.batch::<_, 3>(sparse3()),
+        ("simplex-2d", "bandnoise") => l.point::<_, 2>(Simplex::new(0)),
+        ("simplex-2d", "bandnoise-batch") => l.batch::<_, 2>(Simplex::new(0)),
+        ("simplex-3d", "bandnoise") => l.point::<_, 3>(Simplex::new(0)),
+        ("simplex-3d", "bandnoise-batch") => l.batch::<_, 3>(Simplex::new(0)),
+        ("simplex-2d", "noise") => {
+            let n = noise::Simplex::new(0);
+            l.peer_f64::<2>(move |p| n.get(p))
+        }
+        ("simplex-3d", "noise") => {
+            let n = noise::Simplex::new(0);
+            l.peer_f64::<3>(move |p| n.get(p))
+        }
+        // FastNoise Lite's OpenSimplex2 is simplex noise in 2D (its 3D is a rotated BCC
+        // lattice, another algorithm, so it has no 3D row here).
+        ("simplex-2d", "fastnoise-lite") => {
+            let n = fast(NoiseType::OpenSimplex2, None);
+            l.peer2(move |x, y| n.get_noise_2d(x, y))
+        }
+        ("simplex-2d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::Simplex.sample2([x, y]))
+        }
+        ("simplex-3d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::Simplex.sample3([x, y, Z]))
+        }
+        ("simplex-2d", "libnoise") => {
+            let n = libnoise::Source::<2>::simplex(0);
+            l.peer_f64::<2>(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("simplex-3d", "libnoise") => {
+            let n = libnoise::Source::<3>::simplex(0);
+            l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
+        }
 
         ("perlin-2d", "noise") => {
             let n = noise::Perlin::new(0);

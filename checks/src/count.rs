@@ -4,6 +4,7 @@
 use bandnoise::impulse::{Gabor, Orientation, SparseConvolution};
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
+use bandnoise::simplex::Simplex;
 use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
 use bandnoise::wiener::{Covariance, WienerNoise};
 use bandnoise::{I16F16, Noise, Real};
@@ -42,9 +43,10 @@ pub const OUTPUT_NAMES: [&str; 7] = [
 
 /// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
 /// density (10 impulses per kernel volume) and at 3 impulses per cell, Wiener noise, and Gabor
-/// noise at its defaults (16 impulses per kernel volume), with their own baseline. A program of
-/// its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
-pub const IMPULSE_NAMES: [&str; 14] = [
+/// noise at its defaults (16 impulses per kernel volume), and simplex noise (the noises added
+/// after the lattice noises), with their own baseline. A program of its own (the firmware's
+/// `count-impulse`), as [`OUTPUT_NAMES`].
+pub const IMPULSE_NAMES: [&str; 17] = [
     "baseline impulse",
     "sparse 2D I16F16",
     "sparse 2D f32",
@@ -59,6 +61,9 @@ pub const IMPULSE_NAMES: [&str; 14] = [
     "gabor 2D f32",
     "gabor 3D I16F16",
     "gabor 2D I16F16 isotropic",
+    "simplex 2D I16F16",
+    "simplex 2D f32",
+    "simplex 3D I16F16",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -181,5 +186,9 @@ pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
     acc ^= workload::<f32, 2>(begin, end, |q| bits(gabor.sample(q)));
     acc ^= workload::<I16F16, 3>(begin, end, |q| bits(gabor3.sample(q)));
     acc ^= workload::<I16F16, 2>(begin, end, |q| bits(isotropic.sample(q)));
+    let simplex = Simplex::new(1);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(simplex.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(simplex.sample(q)));
+    acc ^= workload::<I16F16, 3>(begin, end, |q| bits(simplex.sample(q)));
     acc
 }

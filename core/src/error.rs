@@ -108,8 +108,9 @@ pub enum Error {
         /// The number of axes (at most 4 for a spec without a dimension yet).
         dims: usize,
     },
-    /// A periodic wrap asked for a noise that is not a lattice noise (wavelet noise repeats
-    /// with [`Tiling::Periodic`](crate::wavelet::Tiling::Periodic)).
+    /// A periodic wrap asked for a noise that is not on the integer lattice (wavelet noise
+    /// repeats with [`Tiling::Periodic`](crate::wavelet::Tiling::Periodic); simplex noise's
+    /// lattice is skewed, so its periods do not lie along the axes).
     NotPeriodic(&'static str),
     /// A wavelet setting (the tiling) asked for another noise.
     NotWavelet(&'static str),
@@ -222,7 +223,7 @@ impl fmt::Display for Error {
             }
             Error::NotPeriodic(noise) => write!(
                 f,
-                "{noise} noise is not a lattice noise and cannot be wrapped to a period"
+                "{noise} noise is not on the integer lattice and cannot be wrapped to a period"
             ),
             Error::NotWavelet(noise) => write!(f, "{noise} noise has no wavelet tiling"),
             Error::NotMultiband(noise) => {

@@ -22,6 +22,7 @@
 //! sparse seed=2 kernel=catmull-rom density=3
 //! wiener seed=4 covariance=band-pass
 //! gabor seed=5 frequency=2 bandwidth=0.5 direction=1,1 orientation=anisotropic
+//! simplex seed=9 fbm octaves=5
 //! ```
 //!
 //! | setting | value | default |
@@ -97,6 +98,7 @@ use crate::impulse::{
     Weights,
 };
 use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+use crate::simplex::Simplex;
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
     TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
@@ -134,11 +136,13 @@ pub enum Base {
     Wiener,
     /// [`Gabor`]: Lagae et al.'s Gabor noise, 1D–3D. Text: `gabor`.
     Gabor,
+    /// [`Simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D. Text: `simplex`.
+    Simplex,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 11] = [
+    pub const ALL: [Base; 12] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -150,6 +154,7 @@ impl Base {
         Base::Sparse,
         Base::Wiener,
         Base::Gabor,
+        Base::Simplex,
     ];
 
     /// The name in the text form.
@@ -167,6 +172,7 @@ impl Base {
             Base::Sparse => "sparse",
             Base::Wiener => "wiener",
             Base::Gabor => "gabor",
+            Base::Simplex => "simplex",
         }
     }
 
@@ -184,7 +190,7 @@ impl Base {
     /// a cell's corners).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !self.is_wavelet() && !self.is_impulse() && !matches!(self, Base::Wiener)
+        !self.is_wavelet() && !self.is_impulse() && !matches!(self, Base::Wiener | Base::Simplex)
     }
 
     /// Whether the noise is made of random impulses (and has impulse settings: density,
@@ -270,7 +276,8 @@ impl Spec {
     ///
     /// # Errors
     ///
-    /// [`Error::NotPeriodic`] for wavelet noise (use [`Tiling::Periodic`]),
+    /// [`Error::NotPeriodic`] for the noises that are not lattice noises (wavelet noise: use
+    /// [`Tiling::Periodic`]; simplex noise, whose lattice is not aligned with the axes),
     /// [`Error::PeriodAxes`] for no period or more than 4, [`Error::Period`] for a period
     /// outside `1..=65536`.
     pub fn with_period(mut self, period: &[u32]) -> Result<Self, Error> {
@@ -703,6 +710,7 @@ impl Spec {
                 3 => Any::Wiener3(WienerNoise::new(s).with_covariance(self.covariance)),
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
+            Base::Simplex => Any::Simplex(Simplex::new(s)),
             Base::Gabor => match D {
                 1 => Any::Gabor1(self.gabor::<1>()?),
                 2 => Any::Gabor2(self.gabor::<2>()?),
@@ -1456,6 +1464,7 @@ enum Any<S: Tiles> {
     Gabor1(Gabor<1>),
     Gabor2(Gabor<2>),
     Gabor3(Gabor<3>),
+    Simplex(Simplex),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1590,6 +1599,7 @@ macro_rules! spec_noise {
                     Any::C(n) => with_period(n, period, op),
                     Any::M61(n) => with_period(n, period, op),
                     Any::M4093(n) => with_period(n, period, op),
+                    Any::Simplex(n) => op.run(n),
                     Any::$sparse(n) => op.run(n),
                     Any::$wiener(n) => op.run(n),
                     $(Any::$gabor(n) => op.run(n),)?

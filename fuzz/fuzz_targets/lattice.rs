@@ -1,11 +1,12 @@
 //! Every lattice noise of the runtime description (`bandnoise::spec::Base`, so a lattice noise
-//! added there is fuzzed unasked), sampled through the description (bit for bit the typed
+//! added there is fuzzed unasked), and simplex noise, sampled through the description (bit for bit the typed
 //! noise: tests/tests/spec.rs), 1D–4D, in f32 and I16F16, with arbitrary bit patterns as
 //! coordinates and seeds: no panic, never NaN or -0.0, within the documented bound; fixed point
-//! and f32 agree within 2⁻¹¹ where the input is exact in both; gradients are finite; the batch
+//! and f32 agree within 2⁻¹¹ (simplex noise 2⁻¹⁰: its scale and its kernel's fourth power
+//! amplify fixed point's roundings) where the input is exact in both; gradients are finite; the batch
 //! path (`sample_lanes`) equals `sample` bit for bit. Periodic noise with arbitrary periods:
-//! refused outside 1..=65536, otherwise within the bound and periodic bit for bit in fixed
-//! point.
+//! refused outside 1..=65536 (and for simplex noise), otherwise within the bound and periodic
+//! bit for bit in fixed point.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -27,7 +28,7 @@ struct Input {
 
 /// One dimension of `noise`: bounded, never NaN or -0.0, the batch path equal to the point
 /// path, fixed point and f32 close where the input is exact in both.
-fn dim<const D: usize, N>(noise: &N, floats: [f32; 4], fixed: [I16F16; 4], exact: bool)
+fn dim<const D: usize, N>(noise: &N, floats: [f32; 4], fixed: [I16F16; 4], exact: f32)
 where
     N: Noise<f32, D> + Noise<I16F16, D>,
 {
@@ -63,18 +64,19 @@ where
         let s: I16F16 = noise.sample(x);
         assert_eq!(*o, s, "{D}D fixed batch {x:?}");
     }
-    if exact {
+    if exact > 0.0 {
         let qf: [f32; D] = core::array::from_fn(|a| fixed[a].to_num::<f32>());
         let vf: f32 = noise.sample(qf);
         assert!(
-            (w.to_num::<f32>() - vf).abs() <= 1.0 / 2048.0,
+            (w.to_num::<f32>() - vf).abs() <= exact,
             "{D}D {q:?}: {w} vs {vf}"
         );
     }
 }
 
-/// The noise of `spec` in every dimension.
-fn check(spec: &Spec, floats: [f32; 4], fixed: [I16F16; 4], exact: bool) {
+/// The noise of `spec` in every dimension; `exact` is fixed point's tolerance against `f32`
+/// where the input is exact in both (0: not exact).
+fn check(spec: &Spec, floats: [f32; 4], fixed: [I16F16; 4], exact: f32) {
     let built = (
         spec.build::<1>(),
         spec.build::<2>(),
@@ -146,7 +148,7 @@ fn tabled(seed: u32, floats: [f32; 4]) {
 
 fuzz_target!(|input: Input| {
     let base = Base::ALL[usize::from(input.base) % Base::ALL.len()];
-    if !base.is_lattice() {
+    if !base.is_lattice() && base != Base::Simplex {
         return;
     }
     let floats = input.bits.map(f32::from_bits);
@@ -154,8 +156,17 @@ fuzz_target!(|input: Input| {
     // Fixed-point inputs that f32 holds exactly: |x| < 256 (24 significant bits).
     let exact = fixed.iter().all(|x| x.to_bits().unsigned_abs() < 256 << 16);
     let spec = Spec::new(base, input.seed);
-    check(&spec, floats, fixed, exact);
-    periodic(&spec, input.periods, floats, fixed);
+    let tolerance = match (exact, base) {
+        (false, _) => 0.0,
+        (true, Base::Simplex) => 1.0 / 1024.0,
+        (true, _) => 1.0 / 2048.0,
+    };
+    check(&spec, floats, fixed, tolerance);
+    if base == Base::Simplex {
+        assert!(spec.with_period(&input.periods).is_err());
+    } else {
+        periodic(&spec, input.periods, floats, fixed);
+    }
     if base == Base::Perlin {
         tabled(input.seed, floats);
     }

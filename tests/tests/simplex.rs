@@ -329,10 +329,10 @@ fn fixed_point_gradient_and_batches() {
     let mut rng = Rng::from_env(63);
     let noise = Simplex::new(5);
     let diffs = [
-        agree::fixed_vs_f32::<_, 1>(&noise, 20_000, 256, &mut rng),
-        agree::fixed_vs_f32::<_, 2>(&noise, 20_000, 256, &mut rng),
-        agree::fixed_vs_f32::<_, 3>(&noise, 20_000, 256, &mut rng),
-        agree::fixed_vs_f32::<_, 4>(&noise, 20_000, 256, &mut rng),
+        agree::fixed_vs_f32::<_, 1>(&noise, 200_000, 256, &mut rng),
+        agree::fixed_vs_f32::<_, 2>(&noise, 200_000, 256, &mut rng),
+        agree::fixed_vs_f32::<_, 3>(&noise, 200_000, 256, &mut rng),
+        agree::fixed_vs_f32::<_, 4>(&noise, 200_000, 256, &mut rng),
     ];
     println!("largest |I16F16 − f32|, 1D–4D: {diffs:?}");
     assert!(diffs.iter().all(|&d| d < 1e-3), "{diffs:?}");

@@ -362,7 +362,7 @@ fn bad_text_names_the_position_and_what_was_expected() {
     let cases: &[(&str, usize, &str)] = &[
         ("", 0, "a noise name"),
         ("   ", 3, "a noise name"),
-        ("simplex", 0, "a noise name"),
+        ("blobs", 0, "a noise name"),
         ("Perlin", 0, "a noise name"),
         ("perlin seed", 11, "a seed"),
         ("perlin seed=", 12, "a seed"),
@@ -510,6 +510,7 @@ fn every_noise_type_in_core_is_described() {
         ("SparseConvolution", "sparse"),
         ("WienerNoise", "wiener"),
         ("Gabor", "gabor"),
+        ("Simplex", "simplex"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -672,6 +673,31 @@ fn sparse_specs_sample_their_typed_noise_bit_for_bit() {
         dense.build::<2>().unwrap_err(),
         Error::Density { density: 150.0, .. }
     ));
+}
+
+/// A simplex spec samples the typed noise bit for bit (value and gradient, f32 and I16F16,
+/// 1D–4D, and under a fractal sum), and refuses a period (its lattice is skewed).
+#[test]
+fn simplex_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(188);
+    let spec: Spec = "simplex seed=9".parse().expect("valid");
+    same_bits::<1, _>(&spec, &Simplex::new(9), &mut rng);
+    same_bits::<2, _>(&spec, &Simplex::new(9), &mut rng);
+    same_bits::<3, _>(&spec, &Simplex::new(9), &mut rng);
+    same_bits::<4, _>(&spec, &Simplex::new(9), &mut rng);
+    let fbm: Spec = "simplex seed=9 fbm octaves=5".parse().expect("valid");
+    same_bits::<3, _>(
+        &fbm,
+        &Fractal::fbm(Simplex::new(9), Octaves::new(5, 1.99, 0.5).unwrap()),
+        &mut rng,
+    );
+    assert_eq!(spec.to_string(), "simplex seed=9");
+    let e = "simplex period=4,4".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::NotPeriodic("simplex")));
+    assert_eq!(
+        Spec::new(Base::Simplex, 0).with_period(&[4]).unwrap_err(),
+        Error::NotPeriodic("simplex")
+    );
 }
 
 /// A Wiener spec samples the typed noise it names bit for bit (value and gradient, f32 and
@@ -849,13 +875,16 @@ fn consumers_take_their_noises_from_the_description() {
             "{what} ({path}) does not take its noises from bandnoise::spec"
         );
     }
-    // Every base is a lattice noise the helper knows, a wavelet, impulse or Wiener noise.
+    // Every base is a lattice noise the helper knows, a wavelet, impulse, Wiener or simplex
+    // noise.
     for base in Base::ALL {
         if base.is_lattice() {
             let _ = bandnoise_tests::Lattice::of(base, 0);
         } else {
             assert!(
-                base.is_wavelet() || base.is_impulse() || base == Base::Wiener,
+                base.is_wavelet()
+                    || base.is_impulse()
+                    || matches!(base, Base::Wiener | Base::Simplex),
                 "{base}"
             );
         }

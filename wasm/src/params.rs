@@ -107,7 +107,7 @@ fn describe(e: Error) -> String {
             format!("period {period} along axis {axis} is outside 1..=65536 cells")
         }
         Error::NotPeriodic(noise) => {
-            format!("{noise} noise is not a lattice noise and cannot be wrapped to a period")
+            format!("{noise} noise is not on the integer lattice and cannot be wrapped to a period")
         }
         Error::Bandwidth(a) => format!(
             "Gabor bandwidth {} must be finite and in [1/256, 256]",

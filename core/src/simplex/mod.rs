@@ -7,8 +7,10 @@
 //! diagonal (`x_a + F·Σx`, `F = (√(D+1) − 1)/D`): a skewed unit cube splits into `D!`
 //! simplices, and the one holding the point follows from the order of its fractions
 //! (Gustavson's "rank" method). Offsets are *unskewed* by `G = (1 − 1/√(D+1))/D` from the
-//! fractions, so after the skew every computation works with numbers in `[−2, 2]` whatever
-//! the coordinate (fixed point cannot overflow).
+//! fractions. The skew itself splits each coordinate into its cell and fraction first and
+//! skews the cells in integers, so every computation in the number type works with numbers
+//! below 4 whatever the coordinate: fixed point cannot overflow, and `f32` keeps its fraction
+//! bits far from the origin.
 //!
 //! **The falloff radius is the one that makes the noise continuous.** Gustavson's reference
 //! code uses `r² = 0.6` in 3D and 4D, wider than the distance from some simplex faces to the
@@ -65,6 +67,9 @@ use crate::lattice::{Lattice, Perlin};
 ///   search over the simplex (`tests/tests/simplex.rs`; it is a single corner's peak in 3D and
 ///   4D, two corners' in 1D and three in 2D) sets the scale; [`Noise::amplitude_bound`] adds
 ///   2⁻¹⁰ for rounding.
+/// * **Fixed point** follows `f32` within 5.3·10⁻⁴ (4D; 3.9·10⁻⁴ in 2D, measured over
+///   2·10⁵ points of `|x| < 256`): each rounding of `τ = 1 − |d|²/r²` is amplified by the
+///   fourth power's slope and by the scale.
 /// * **Bad input**: a non-finite coordinate, or coordinates whose sum overflows, sample the
 ///   origin's cell (as [`Real::split`]); fixed point takes any coordinate exactly.
 ///
@@ -113,14 +118,43 @@ struct Located<R, const D: usize> {
     rank: [usize; D],
 }
 
+/// The skewed cell of `p` and the fractions of its skewed coordinates `x_a + F·Σx`, to the
+/// type's precision at numbers below 4 whatever the coordinate: each coordinate is split
+/// first, the cells' part `F·Σc` is taken in 64-bit integers (its whole part added to the
+/// cells, its fraction rounded once), and only fractions are added in `R`. (Skewing the
+/// coordinates themselves, as the reference code does, loses `f32`'s fraction bits to their
+/// size: at 256 cells from the origin the offsets were off by 3·10⁻⁵.) Cells wrap modulo 2³².
+#[inline]
+fn skew<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; D]) {
+    let mut cell = [0; D];
+    let mut frac = [R::ZERO; D];
+    let mut cells = 0i64;
+    let mut fractions = R::ZERO;
+    for a in 0..D {
+        (cell[a], frac[a]) = p[a].split();
+        cells += i64::from(cell[a]);
+        fractions = fractions + frac[a];
+    }
+    if D == 1 {
+        return (cell, frac);
+    }
+    // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
+    let product = cells * i64::from(SKEW[D]);
+    let whole = (product >> 31) as i32;
+    let part = R::from_ratio((product & 0x7FFF_FFFF) as i32, 31);
+    // Σf < 4 and F < ½: below 3, and each fraction plus it below 4.
+    let shared = part + fractions.mul_fraction(R::from_ratio(SKEW[D], 31));
+    for a in 0..D {
+        let (step, f) = (frac[a] + shared).split();
+        cell[a] = cell[a].wrapping_add(whole).wrapping_add(step);
+        frac[a] = f;
+    }
+    (cell, frac)
+}
+
 #[inline]
 fn locate<R: Real, const D: usize>(p: [R; D]) -> Located<R, D> {
-    let (cell, u) = if D == 1 {
-        let (c, f) = p[0].split();
-        ([c; D], [f; D])
-    } else {
-        R::skew_split(p, SKEW[D])
-    };
+    let (cell, u) = skew(p);
     // Σu < D and G < ¼: the product is below 1.
     let mut sum = R::ZERO;
     for x in u {

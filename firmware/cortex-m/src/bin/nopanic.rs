@@ -1,6 +1,6 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, fractal sums, wavelet bands, projected and multiband noise, sparse, Wiener and Gabor
-//! noise, batches, integer outputs (`levels`), and the public
+//! 1D–4D, simplex noise 1D–4D, fractal sums, wavelet bands, projected and multiband noise,
+//! sparse, Wiener and Gabor noise, batches, integer outputs (`levels`), and the public
 //! helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and `cos_turns`) in I16F16 and f32 on
 //! inputs the optimiser cannot see (`nopanic-spec` proves the runtime descriptions and
 //! `nopanic-text` their text form), and its panic handler calls a function that does not exist.
@@ -19,6 +19,7 @@ use bandnoise::lattice::{
     CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
 };
 use bandnoise::levels::Levels;
+use bandnoise::simplex::Simplex;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
 };
@@ -51,6 +52,8 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     all_dims!(ValueNoise::new(black_box(1)));
     all_dims!(CNoise::new(black_box(1)));
     all_dims!(MNoise::<61>::new(black_box(1)));
+    all_dims!(Simplex::new(black_box(1)));
+    add(Simplex::new(2).sample_with_gradient(p).1[3]);
     add(Perlin::new(2).sample_with_gradient([p[0], p[1], p[2]]).0);
     add(MNoise::<61>::new(2).sample_with_gradient([p[0], p[1]]).1[1]);
     let kind = black_box(Kind::Ridged);
