@@ -120,7 +120,7 @@ fn every_noise_renders_and_draws() {
     let mut demo = Demo::new(64).unwrap();
     let ctx = canvas();
     let kinds = bandnoise_wasm::kinds();
-    assert_eq!(kinds.len(), 11, "{kinds:?}");
+    assert_eq!(kinds.len(), 12, "{kinds:?}");
     for kind in &kinds {
         for number in ["f32", "fixed"] {
             demo.render(&params(kind, number).unwrap());
@@ -368,7 +368,7 @@ fn bad_parameters_are_refused_with_a_message() {
             period: 8.0,
             ..ARGS
         },
-        "not a lattice noise",
+        "not on the integer lattice",
     );
     refused(
         Args {

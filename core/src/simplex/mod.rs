@@ -140,16 +140,28 @@ fn skew<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; D]) {
     }
     // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
     let product = cells * i64::from(SKEW[D]);
-    let whole = (product >> 31) as i32;
+    let mut whole = (product >> 31) as i32;
     let part = R::from_ratio((product & 0x7FFF_FFFF) as i32, 31);
-    // Σf < 4 and F < ½: below 3, and each fraction plus it below 4.
+    // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every axis,
+    // and each fraction plus its fraction is below 2 (compare-and-subtract steps, cheaper
+    // than a general split).
     let shared = part + fractions.mul_fraction(R::from_ratio(SKEW[D], 31));
+    let (up, shared) = step_down(shared);
+    let (up2, shared) = step_down(shared);
+    whole = whole.wrapping_add(up + up2);
     for a in 0..D {
-        let (step, f) = (frac[a] + shared).split();
-        cell[a] = cell[a].wrapping_add(whole).wrapping_add(step);
+        let (up, f) = step_down(frac[a] + shared);
+        cell[a] = cell[a].wrapping_add(whole).wrapping_add(up);
         frac[a] = f;
     }
     (cell, frac)
+}
+
+/// `(1, t − 1)` if `t ≥ 1`, else `(0, t)`: one step of the floor of a small non-negative number.
+#[inline]
+fn step_down<R: Real>(t: R) -> (i32, R) {
+    let up = t >= R::ONE;
+    (i32::from(up), if up { t - R::ONE } else { t })
 }
 
 #[inline]
@@ -212,14 +224,14 @@ where
         for x in d {
             q = q + x.mul_fraction(x);
         }
-        // τ = 1 − |d|²/r², exact (a doubling); the corner contributes where τ > 0.
+        // τ = 1 − |d|²/r², exact (a doubling); the corner contributes where τ > 0. Clamped
+        // rather than skipped: a corner out of reach adds an exact 0 (a branch here is a coin
+        // flip for the predictor).
         let mut tau = R::ONE - q;
         if shift == 1 {
             tau = tau - q;
         }
-        if tau <= R::ZERO {
-            continue;
-        }
+        let tau = if tau > R::ZERO { tau } else { R::ZERO };
         let h = chain::cell(Order::XFirst, 0, corner, |h, c| {
             noise.perlin.chain().step(h, c)
         });
