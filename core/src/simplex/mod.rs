@@ -52,7 +52,8 @@
 //! ```
 
 use crate::Real;
-use crate::hash::chain::{self, ChainHash, Doubled, Order};
+use crate::batch::LANES;
+use crate::hash::chain::{ChainHash, Doubled};
 use crate::lattice::{Lattice, Perlin};
 
 /// Simplex noise in 1 to 4 dimensions, continuous (C²) with its analytic gradient.
@@ -110,83 +111,72 @@ const UNSKEW: [i32; 5] = [0, 0, 453_816_693, 357_913_941, 296_774_941];
 /// middle; searched in 2D–4D, `tests/tests/simplex.rs`).
 const SCALE: [i32; 5] = [0, 207_126, 287_326, 314_903, 257_137];
 
-/// The simplex holding a point: its first cell, the unskewed offset from that corner, and the
-/// rank of each axis's fraction (the order in which the walk to the far corner steps the axes).
-struct Located<R, const D: usize> {
-    cell: [i32; D],
-    offset: [R; D],
-    rank: [usize; D],
-}
-
-/// The skewed cell of `p` and the fractions of its skewed coordinates `x_a + F·Σx`, to the
-/// type's precision at numbers below 4 whatever the coordinate: each coordinate is split
-/// first, the cells' part `F·Σc` is taken in 64-bit integers (its whole part added to the
-/// cells, its fraction rounded once), and only fractions are added in `R`. (Skewing the
-/// coordinates themselves, as the reference code does, loses `f32`'s fraction bits to their
-/// size: at 256 cells from the origin the offsets were off by 3·10⁻⁵.) Cells wrap modulo 2³².
-#[inline]
-fn skew<R: Real, const D: usize>(p: [R; D]) -> ([i32; D], [R; D]) {
-    let mut cell = [0; D];
-    let mut frac = [R::ZERO; D];
-    let mut cells = 0i64;
-    let mut fractions = R::ZERO;
+/// The skewed cells of `N` points and the fractions of their skewed coordinates
+/// `x_a + F·Σx`, to the type's precision at numbers below 4 whatever the coordinate: each
+/// coordinate is split first, the cells' part `F·Σc` is taken in 64-bit integers (its whole
+/// part added to the cells, its fraction rounded once), and only fractions are added in `R`.
+/// (Skewing the coordinates themselves, as the reference code does, loses `f32`'s fraction
+/// bits to their size: at 256 cells from the origin the offsets were off by 3·10⁻⁵.) Cells
+/// wrap modulo 2³².
+#[inline(always)]
+fn skew<R: Real, const D: usize, const N: usize>(
+    p: &[[R; N]; D],
+    cell: &mut [[i32; N]; D],
+    frac: &mut [[R; N]; D],
+) {
     for a in 0..D {
-        (cell[a], frac[a]) = p[a].split();
-        cells += i64::from(cell[a]);
-        fractions = fractions + frac[a];
+        split(&p[a], &mut cell[a], &mut frac[a]);
     }
     if D == 1 {
-        return (cell, frac);
+        return;
     }
-    // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
-    let product = cells * i64::from(SKEW[D]);
-    let mut whole = (product >> 31) as i32;
-    let part = R::from_ratio((product & 0x7FFF_FFFF) as i32, 31);
-    // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every axis,
-    // and each fraction plus its fraction is below 2 (compare-and-subtract steps, cheaper
-    // than a general split).
-    let shared = part + fractions.mul_fraction(R::from_ratio(SKEW[D], 31));
-    let (up, shared) = step_down(shared);
-    let (up2, shared) = step_down(shared);
-    whole = whole.wrapping_add(up + up2);
-    for a in 0..D {
-        let (up, f) = step_down(frac[a] + shared);
-        cell[a] = cell[a].wrapping_add(whole).wrapping_add(up);
-        frac[a] = f;
+    let f = R::from_ratio(SKEW[D], 31);
+    for l in 0..N {
+        let mut cells = 0i64;
+        let mut fractions = R::ZERO;
+        for a in 0..D {
+            cells += i64::from(cell[a][l]);
+            fractions = fractions + frac[a][l];
+        }
+        // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
+        let product = cells * i64::from(SKEW[D]);
+        let part = R::from_ratio((product & 0x7FFF_FFFF) as i32, 31);
+        // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every
+        // axis, and each fraction plus its fraction is below 2 (compare-and-subtract steps,
+        // cheaper than a general split).
+        let shared = part + fractions.mul_fraction(f);
+        let (up, shared) = step_down(shared);
+        let (up2, shared) = step_down(shared);
+        let whole = ((product >> 31) as i32).wrapping_add(up + up2);
+        for a in 0..D {
+            let (up, t) = step_down(frac[a][l] + shared);
+            cell[a][l] = cell[a][l].wrapping_add(whole).wrapping_add(up);
+            frac[a][l] = t;
+        }
     }
-    (cell, frac)
+}
+
+/// [`Real::split`] of `N` coordinates; 16 lanes take the vectorised form (the same bits).
+#[inline(always)]
+fn split<R: Real, const N: usize>(x: &[R; N], cell: &mut [i32; N], frac: &mut [R; N]) {
+    if let (Ok(x), Ok(cell), Ok(frac)) = (
+        <&[R; LANES]>::try_from(&x[..]),
+        <&mut [i32; LANES]>::try_from(&mut cell[..]),
+        <&mut [R; LANES]>::try_from(&mut frac[..]),
+    ) {
+        R::split_lanes(x, cell, frac);
+    } else {
+        for l in 0..N {
+            (cell[l], frac[l]) = x[l].split();
+        }
+    }
 }
 
 /// `(1, t − 1)` if `t ≥ 1`, else `(0, t)`: one step of the floor of a small non-negative number.
-#[inline]
+#[inline(always)]
 fn step_down<R: Real>(t: R) -> (i32, R) {
     let up = t >= R::ONE;
     (i32::from(up), if up { t - R::ONE } else { t })
-}
-
-#[inline]
-fn locate<R: Real, const D: usize>(p: [R; D]) -> Located<R, D> {
-    let (cell, u) = skew(p);
-    // Σu < D and G < ¼: the product is below 1.
-    let mut sum = R::ZERO;
-    for x in u {
-        sum = sum + x;
-    }
-    let back = sum.mul_fraction(R::from_ratio(UNSKEW[D], 31));
-    let offset = u.map(|x| x - back);
-    // Gustavson's ranks: the axis with the largest fraction is stepped first (ties go to the
-    // later axis; a tie is a simplex face, where both choices give the same value).
-    let mut rank = [0; D];
-    for a in 0..D {
-        for b in a + 1..D {
-            if u[a] > u[b] {
-                rank[a] += 1;
-            } else {
-                rank[b] += 1;
-            }
-        }
-    }
-    Located { cell, offset, rank }
 }
 
 /// `1/r²` as a shift: `r² = ½` in 2D–4D, 1 in 1D.
@@ -194,70 +184,134 @@ const fn inverse_radius_shift(dims: usize) -> u32 {
     if dims == 1 { 0 } else { 1 }
 }
 
-/// The value (and with `GRADIENT`, the gradient) of simplex noise at `p`.
-#[inline]
-fn simplex<R: Real, const D: usize, const GRADIENT: bool>(noise: &Simplex, p: [R; D]) -> (R, [R; D])
-where
+/// Simplex noise at `N` points (one for a point sample, [`LANES`] for a batch: each lane is
+/// the same operations on the same numbers, so batches are `sample`'s bits), into `value`,
+/// and with `GRADIENT`, its gradient into `gradient`. Written lane by lane in each step, so
+/// that the arithmetic vectorises; the corners' hashes are looked up lane by lane.
+#[inline(always)]
+fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
+    noise: &Simplex,
+    p: &[[R; N]; D],
+    value: &mut [R; N],
+    gradient: &mut [[R; N]; D],
+) where
     Perlin: Lattice<D>,
 {
-    let Located { cell, offset, rank } = locate(p);
-    let start = cell.map(Doubled::reduce);
-    let shift = inverse_radius_shift(D);
-    let mut value = R::ZERO;
-    let mut gradient = [R::ZERO; D];
-    for j in 0..=D {
-        // The j-th corner: one step along each of the j axes ranked highest.
-        // j·G < 2³¹: exact in every type's precision of 2⁻³¹ units.
-        let diagonal = R::from_ratio(UNSKEW[D] * j as i32, 31);
-        let mut corner = [0u32; D];
-        let mut d = [R::ZERO; D];
+    let mut cell = [[0i32; N]; D];
+    let mut offset = [[R::ZERO; N]; D];
+    skew(p, &mut cell, &mut offset);
+    // Gustavson's ranks: the axis with the largest fraction is stepped first (ties go to the
+    // later axis; a tie is a simplex face, where both choices give the same value).
+    let mut rank = [[0u32; N]; D];
+    for a in 0..D {
+        for b in a + 1..D {
+            for l in 0..N {
+                let greater = u32::from(offset[a][l] > offset[b][l]);
+                rank[a][l] += greater;
+                rank[b][l] += 1 - greater;
+            }
+        }
+    }
+    // Unskewed offsets from the first corner. Σu < D and G < ¼: the product is below 1.
+    let g = R::from_ratio(UNSKEW[D], 31);
+    for l in 0..N {
+        let mut sum = R::ZERO;
         for a in 0..D {
-            let step = u32::from(rank[a] + j >= D);
-            corner[a] = start[a] + step;
-            d[a] = offset[a] + diagonal;
-            if step == 1 {
-                d[a] = d[a] - R::ONE;
-            }
+            sum = sum + offset[a][l];
         }
-        // |d| < 2 per axis: the squares and their sum stay in range.
-        let mut q = R::ZERO;
-        for x in d {
-            q = q + x.mul_fraction(x);
+        let back = sum.mul_fraction(g);
+        for a in 0..D {
+            offset[a][l] = offset[a][l] - back;
         }
-        // τ = 1 − |d|²/r², exact (a doubling); the corner contributes where τ > 0. Clamped
-        // rather than skipped: a corner out of reach adds an exact 0 (a branch here is a coin
-        // flip for the predictor).
-        let mut tau = R::ONE - q;
-        if shift == 1 {
-            tau = tau - q;
-        }
-        let tau = if tau > R::ZERO { tau } else { R::ZERO };
-        let h = chain::cell(Order::XFirst, 0, corner, |h, c| {
-            noise.perlin.chain().step(h, c)
-        });
-        let dot = Lattice::<D>::dot(&noise.perlin, h, &d);
-        let tau2 = tau.mul_fraction(tau);
-        let tau4 = tau2.mul_fraction(tau2);
-        value = value + tau4.mul_rn(dot);
-        if GRADIENT {
-            // ∂/∂x [τ⁴ (g·d)] = τ⁴ g − 8τ³ (g·d) d / r²: with r² = ½, 16τ³ (g·d) d.
-            let g = Lattice::<D>::gradient::<R>(&noise.perlin, h);
-            let tau3 = tau2.mul_fraction(tau);
-            // |g·d| < 4, so 8·τ³(g·d)·2 stays within ±64.
-            let mut radial = tau3.mul_rn(dot);
-            for _ in 0..3 + shift {
-                radial = radial + radial;
-            }
+    }
+    let shift = inverse_radius_shift(D);
+    *value = [R::ZERO; N];
+    *gradient = [[R::ZERO; N]; D];
+    for j in 0..=D {
+        // The j-th corner: one step along each of the j axes ranked highest. j·G < 2³¹:
+        // exact in every type's precision of 2⁻³¹ units.
+        let diagonal = R::from_ratio(UNSKEW[D] * j as i32, 31);
+        let mut d = [[R::ZERO; N]; D];
+        let mut tau = [R::ZERO; N];
+        for l in 0..N {
+            // |d| < 2 per axis: the squares and their sum stay in range.
+            let mut q = R::ZERO;
             for a in 0..D {
-                gradient[a] = gradient[a] + tau4.mul_rn(g[a]) - radial.mul_rn(d[a]);
+                let x = offset[a][l] + diagonal;
+                let x = if rank[a][l] + j as u32 >= D as u32 {
+                    x - R::ONE
+                } else {
+                    x
+                };
+                d[a][l] = x;
+                q = q + x.mul_fraction(x);
+            }
+            // τ = 1 − |d|²/r², exact (a doubling); the corner contributes where τ > 0.
+            // Clamped rather than skipped: a corner out of reach adds an exact 0 (a branch
+            // here is a coin flip for the predictor).
+            let mut t = R::ONE - q;
+            if shift == 1 {
+                t = t - q;
+            }
+            tau[l] = if t > R::ZERO { t } else { R::ZERO };
+        }
+        // The corners' gradients, lane by lane (table lookups)...
+        let mut g = [[R::ZERO; N]; D];
+        for l in 0..N {
+            let mut h = 0;
+            for a in 0..D {
+                let step = u32::from(rank[a][l] + j as u32 >= D as u32);
+                // Reduced here rather than kept in an array: the bound `≤ 256` stays visible,
+                // so the doubled table's lookup needs no bounds check.
+                h = noise
+                    .perlin
+                    .chain()
+                    .step(h, Doubled::reduce(cell[a][l]) + step);
+            }
+            let row = Lattice::<D>::gradient::<R>(&noise.perlin, h);
+            for a in 0..D {
+                g[a][l] = row[a];
+            }
+        }
+        // ... then the kernel over all lanes at once.
+        for l in 0..N {
+            // Gradient components are exact units in 2D–4D (additions, or a multiply that
+            // reads the unit), slopes in 1D.
+            let mut dot = R::ZERO;
+            for a in 0..D {
+                let term = if D == 1 {
+                    d[a][l].mul_rn(g[a][l])
+                } else {
+                    d[a][l].mul_unit(g[a][l])
+                };
+                dot = dot + term;
+            }
+            let tau2 = tau[l].mul_fraction(tau[l]);
+            let tau4 = tau2.mul_fraction(tau2);
+            value[l] = value[l] + tau4.mul_rn(dot);
+            if GRADIENT {
+                // ∂/∂x [τ⁴ (g·d)] = τ⁴ g − 8τ³ (g·d) d / r²: with r² = ½, 16τ³ (g·d) d.
+                let tau3 = tau2.mul_fraction(tau[l]);
+                // |g·d| < 4, so 8·τ³(g·d)·2 stays within ±64.
+                let mut radial = tau3.mul_rn(dot);
+                for _ in 0..3 + shift {
+                    radial = radial + radial;
+                }
+                for a in 0..D {
+                    gradient[a][l] = gradient[a][l] + tau4.mul_rn(g[a][l]) - radial.mul_rn(d[a][l]);
+                }
             }
         }
     }
     let scale = R::from_ratio(SCALE[D], 16);
-    (
-        value.mul_rn(scale).canonical(),
-        gradient.map(|g| g.mul_rn(scale).canonical()),
-    )
+    for l in 0..N {
+        value[l] = value[l].mul_rn(scale).canonical();
+        if GRADIENT {
+            for a in 0..D {
+                gradient[a][l] = gradient[a][l].mul_rn(scale).canonical();
+            }
+        }
+    }
 }
 
 macro_rules! simplex_impls {
@@ -265,17 +319,25 @@ macro_rules! simplex_impls {
         impl<R: Real> crate::Noise<R, $d> for Simplex {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
-                simplex::<R, $d, false>(self, p).0
+                let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
+                simplex::<R, $d, 1, false>(self, &p.map(|x| [x]), &mut value, &mut gradient);
+                value[0]
             }
             fn amplitude_bound(&self) -> f32 {
                 1.0 + crate::lattice::ROUNDING
+            }
+            fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
+                let mut gradient = [[R::ZERO; LANES]; $d];
+                simplex::<R, $d, LANES, false>(self, p, out, &mut gradient);
             }
         }
 
         impl<R: Real> crate::NoiseGradient<R, $d> for Simplex {
             #[inline]
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
-                simplex::<R, $d, true>(self, p)
+                let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
+                simplex::<R, $d, 1, true>(self, &p.map(|x| [x]), &mut value, &mut gradient);
+                (value[0], gradient.map(|g| g[0]))
             }
         }
     )*};
