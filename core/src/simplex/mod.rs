@@ -189,6 +189,10 @@ const fn inverse_radius_shift(dims: usize) -> u32 {
 /// and with `GRADIENT`, its gradient into `gradient`. Written lane by lane in each step, so
 /// that the arithmetic vectorises; the corners' hashes are looked up lane by lane.
 #[inline(always)]
+#[allow(
+    clippy::needless_range_loop,
+    reason = "each step loops over the lanes innermost, indexing the axis arrays, so that it vectorises"
+)]
 fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
     noise: &Simplex,
     p: &[[R; N]; D],
