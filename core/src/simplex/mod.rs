@@ -284,7 +284,7 @@ fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
             let mut dot = R::ZERO;
             for a in 0..D {
                 let term = if D == 1 {
-                    d[a][l].mul_rn(g[a][l])
+                    d[a][l].mul_fraction(g[a][l])
                 } else {
                     d[a][l].mul_unit(g[a][l])
                 };
@@ -292,27 +292,33 @@ fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
             }
             let tau2 = tau[l].mul_fraction(tau[l]);
             let tau4 = tau2.mul_fraction(tau2);
-            value[l] = value[l] + tau4.mul_rn(dot);
+            // τ⁴ ≤ 1 and the other factors are small (below): every product fits, so the
+            // cheaper `mul_fraction` (no saturation; 32-bit halves on ARMv6-M) rounds as
+            // `mul_rn` would.
+            value[l] = value[l] + tau4.mul_fraction(dot);
             if GRADIENT {
                 // ∂/∂x [τ⁴ (g·d)] = τ⁴ g − 8τ³ (g·d) d / r²: with r² = ½, 16τ³ (g·d) d.
                 let tau3 = tau2.mul_fraction(tau[l]);
                 // |g·d| < 4, so 8·τ³(g·d)·2 stays within ±64.
-                let mut radial = tau3.mul_rn(dot);
+                let mut radial = tau3.mul_fraction(dot);
                 for _ in 0..3 + shift {
                     radial = radial + radial;
                 }
                 for a in 0..D {
-                    gradient[a][l] = gradient[a][l] + tau4.mul_rn(g[a][l]) - radial.mul_rn(d[a][l]);
+                    gradient[a][l] =
+                        gradient[a][l] + tau4.mul_fraction(g[a][l]) - radial.mul_fraction(d[a][l]);
                 }
             }
         }
     }
     let scale = R::from_ratio(SCALE[D], 16);
     for l in 0..N {
-        value[l] = value[l].mul_rn(scale).canonical();
+        // |value| ≤ 1/scale, so the product is at most 1.
+        value[l] = value[l].mul_fraction(scale).canonical();
         if GRADIENT {
             for a in 0..D {
-                gradient[a][l] = gradient[a][l].mul_rn(scale).canonical();
+                // Gradient components stay below 64 before and after scaling.
+                gradient[a][l] = gradient[a][l].mul_fraction(scale).canonical();
             }
         }
     }
