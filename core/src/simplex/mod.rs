@@ -22,7 +22,11 @@
 //! faces for both radii. In 1D the "simplices" are the unit cells and `r = 1`, Gustavson's 1D
 //! noise.
 //!
-//! **Hash and gradients** are [`Perlin`](crate::lattice::Perlin)'s: the seed's permutation
+//! **Batches** ([`Noise::fill_grid`](crate::Noise::fill_grid), `fill_points`) run the same
+//! body over 16 points at once, each step a loop over the points, so that the arithmetic
+//! vectorises: the same operations on the same numbers as a point sample, bit for bit.
+//!
+//! **Hash and gradients** are [`Perlin`]'s: the seed's permutation
 //! folded over a corner's cell with x innermost (`p[p[p[x] + y] + z]`, each coordinate mod
 //! 256, so the noise repeats every 256 cells along each skewed lattice axis), 1D slopes
 //! `±¼ … ±1`, the 12 cube edges in 3D (Perlin's `grad`, as Gustavson's `grad3`), their
