@@ -12,3 +12,12 @@ mod render;
 
 pub use params::{Params, kinds};
 pub use render::Demo;
+
+/// A free-list allocator of about 800 bytes instead of the standard library's dlmalloc (about
+/// 7 KB with `free` and `realloc`): the module's size has a budget (README, Browser), and the
+/// demo allocates a few buffers per setting, not per sample. Locked rather than assumed
+/// single-threaded, so no `unsafe` is needed.
+#[cfg(target_arch = "wasm32")]
+#[global_allocator]
+static ALLOCATOR: lol_alloc::LockedAllocator<lol_alloc::FreeListAllocator> =
+    lol_alloc::LockedAllocator::new(lol_alloc::FreeListAllocator::new());
