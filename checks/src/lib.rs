@@ -15,8 +15,10 @@ pub mod led;
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
-use bandnoise::lattice::TabledPerlin;
+use bandnoise::lattice::{Perlin, TabledPerlin};
+use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
+use bandnoise::vector::{Curl2, Curl3, VectorNoise};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
 use bandnoise::wiener::Covariance;
 use bandnoise::{
@@ -233,7 +235,7 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 /// Checksums of what is not a noise description: Gabor surface noise and filtering, projected
 /// sampling, wavelet gradients, filtering and infinite noise, the cell hash and generator, the
 /// kernels' `exp` and `cos`, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 11] = [
+const OTHER: [&str; 12] = [
     "gabor surface",
     "gabor filtered",
     "multiband projected",
@@ -245,6 +247,7 @@ const OTHER: [&str; 11] = [
     "exp and cos",
     "tabled perlin 2D",
     "tabled perlin 3D",
+    "simplex gradients and curl",
 ];
 
 /// Gabor surface noise (isotropic: each impulse's direction turned into the plane) and Gabor
@@ -363,6 +366,34 @@ fn all<R: Bits>(out: &mut [u32]) {
     let tabled = TabledPerlin::new(1);
     push(checksum::<R, 2>(&tabled, 200));
     push(checksum::<R, 3>(&tabled, 200));
+    push(vector_checksum::<R>());
+}
+
+/// Simplex noise's gradients (2D–4D, each value and slope) and curl noise (2D over simplex
+/// noise, 3D over three Perlin noises). Out of line, for the Cortex-M0's stack.
+#[inline(never)]
+fn vector_checksum<R: Bits>() -> u32 {
+    let mut f = Fnv::new();
+    let simplex = Simplex::new(3);
+    let flow = Curl2::new(simplex.clone());
+    let flow3 = Curl3::new(Perlin::new(1), Perlin::new(2), Perlin::new(3));
+    for i in 0..POINTS / 4 {
+        let p = point::<R, 4>(i, 100);
+        let (v, g) = simplex.sample_with_gradient([p[0], p[1]]);
+        g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        let (v, g) = simplex.sample_with_gradient([p[0], p[1], p[2]]);
+        g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        let (v, g) = simplex.sample_with_gradient(p);
+        g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        flow.sample_vector([p[0], p[1]])
+            .iter()
+            .for_each(|x| f.add(x.bits()));
+        flow3
+            .sample_vector([p[0], p[1], p[2]])
+            .iter()
+            .for_each(|x| f.add(x.bits()));
+    }
+    f.0
 }
 
 /// What a checksum samples: a base noise in some dimensions, or a named check. (Not the

@@ -16,6 +16,7 @@
 //!   and any of them periodic ([`Periodic`](lattice::Periodic)).
 //! * [`simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D, continuous, with its
 //!   analytic gradient.
+//! * [`vector`]: curl noise (Bridson et al. 2007) from any noise's analytic gradient.
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
 //! * [`impulse`]: Lewis's sparse convolution noise and Lagae et al.'s Gabor noise: random
 //!   impulses per cell convolved with a kernel, normalised by Campbell's theorem.
@@ -95,6 +96,7 @@ mod real;
 pub mod simplex;
 pub mod spec;
 mod special;
+pub mod vector;
 pub mod wavelet;
 pub mod wiener;
 
@@ -111,6 +113,7 @@ pub mod prelude {
         CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
     };
     pub use crate::simplex::Simplex;
+    pub use crate::vector::{Curl2, Curl3, VectorNoise};
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{
         FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,

@@ -528,6 +528,14 @@ fn every_noise_type_in_core_is_described() {
             "private: the dispatch's value for dimensions build refuses",
         ),
         ("&N", "a reference to a noise"),
+        (
+            "Curl2",
+            "a vector noise (VectorNoise): the description names scalar noises",
+        ),
+        (
+            "Curl3",
+            "a vector noise (VectorNoise): the description names scalar noises",
+        ),
     ];
     let mut found = std::collections::BTreeSet::new();
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/src");

@@ -1,0 +1,152 @@
+//! Curl noise (Bridson et al. 2007): divergence-free, measured by central differences of the
+//! field in `f64`; the 2D field is the potential's gradient turned a quarter turn, bit for bit;
+//! fixed point follows `f32`; a field worth the name (not vanishing); total on bad input.
+
+use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::lattice::Perlin;
+use bandnoise::simplex::Simplex;
+use bandnoise::vector::{Curl2, Curl3, VectorNoise};
+use bandnoise::{I16F16, NoiseGradient};
+use bandnoise_tests::Rng;
+
+/// The largest |divergence| of `field` by central differences of step `h` over `n` random
+/// points of `(−50, 50)^D`, and the root mean square of its components (the scale to judge the
+/// divergence against).
+fn divergence<const D: usize>(
+    field: &impl VectorNoise<f64, D>,
+    n: usize,
+    h: f64,
+    rng: &mut Rng,
+) -> (f64, f64) {
+    let (mut worst, mut square) = (0.0f64, 0.0f64);
+    for _ in 0..n {
+        let p: [f64; D] = core::array::from_fn(|_| rng.f64_in(-50.0, 50.0));
+        let mut div = 0.0;
+        for a in 0..D {
+            let (mut hi, mut lo) = (p, p);
+            hi[a] += h;
+            lo[a] -= h;
+            div += (field.sample_vector(hi)[a] - field.sample_vector(lo)[a]) / (2.0 * h);
+        }
+        worst = worst.max(div.abs());
+        square += field.sample_vector(p).iter().map(|c| c * c).sum::<f64>() / D as f64;
+    }
+    (worst, (square / n as f64).sqrt())
+}
+
+/// Divergence below 1e-4 (central differences, step 1e-6: simplex noise's kernel has a kink
+/// in its third derivative at its radius, which a central difference straddling it turns into
+/// an error of order `h` times the jump, 8³ times larger in an fBm's fourth octave) for 2D and
+/// 3D curl noise over Perlin noise, simplex noise and an fBm of simplex noise, with a field of
+/// order 1.
+#[test]
+fn divergence_free() {
+    let mut rng = Rng::from_env(70);
+    let fbm = || Fractal::fbm(Simplex::new(4), Octaves::new(4, 1.99, 0.5).unwrap());
+    let cases: [(&str, (f64, f64)); 6] = [
+        (
+            "2D Perlin",
+            divergence(&Curl2::new(Perlin::new(1)), 20_000, 1e-6, &mut rng),
+        ),
+        (
+            "2D simplex",
+            divergence(&Curl2::new(Simplex::new(1)), 20_000, 1e-6, &mut rng),
+        ),
+        (
+            "2D simplex fBm, 4 octaves",
+            divergence(&Curl2::new(fbm()), 20_000, 1e-6, &mut rng),
+        ),
+        (
+            "3D Perlin",
+            divergence(
+                &Curl3::new(Perlin::new(1), Perlin::new(2), Perlin::new(3)),
+                20_000,
+                1e-6,
+                &mut rng,
+            ),
+        ),
+        (
+            "3D simplex",
+            divergence(
+                &Curl3::new(Simplex::new(1), Simplex::new(2), Simplex::new(3)),
+                20_000,
+                1e-6,
+                &mut rng,
+            ),
+        ),
+        (
+            "3D simplex fBm, 4 octaves",
+            divergence(
+                &Curl3::new(
+                    fbm(),
+                    Fractal::fbm(Simplex::new(5), Octaves::new(4, 1.99, 0.5).unwrap()),
+                    Fractal::fbm(Simplex::new(6), Octaves::new(4, 1.99, 0.5).unwrap()),
+                ),
+                20_000,
+                1e-6,
+                &mut rng,
+            ),
+        ),
+    ];
+    for (name, (worst, rms)) in cases {
+        println!("curl of {name}: largest |divergence| {worst:.1e}, field rms {rms:.3}");
+        assert!(worst < 1e-4, "{name}: divergence {worst}");
+        assert!(rms > 0.1, "{name}: the field vanishes ({rms})");
+    }
+}
+
+/// The 2D field is the gradient turned a quarter turn, bit for bit; the 3D field is the curl
+/// of the three gradients; fixed point follows `f32` (each point exact in both).
+#[test]
+fn components_and_fixed_point() {
+    let mut rng = Rng::from_env(71);
+    let potential = Simplex::new(9);
+    let flow = Curl2::new(potential.clone());
+    let flow3 = Curl3::new(Perlin::new(1), Simplex::new(2), Perlin::new(3));
+    let (mut worst2, mut worst3) = (0.0f32, 0.0f32);
+    for _ in 0..20_000 {
+        let q: [I16F16; 3] = rng.exact_point(200);
+        let p = q.map(|x| x.to_num::<f32>());
+        let (_, g): (f32, [f32; 2]) = potential.sample_with_gradient([p[0], p[1]]);
+        let [u, v] = flow.sample_vector([p[0], p[1]]);
+        assert_eq!(
+            [u.to_bits(), v.to_bits()],
+            [g[1].to_bits(), (-g[0] + 0.0).to_bits()]
+        );
+        let fixed: [I16F16; 2] = flow.sample_vector([q[0], q[1]]);
+        for (a, b) in fixed.iter().zip([u, v]) {
+            worst2 = worst2.max((a.to_num::<f32>() - b).abs());
+        }
+        let (_, g1) = Perlin::new(1).sample_with_gradient(p);
+        let (_, g2) = Simplex::new(2).sample_with_gradient(p);
+        let (_, g3) = Perlin::new(3).sample_with_gradient(p);
+        let w: [f32; 3] = flow3.sample_vector(p);
+        let expected = [g3[1] - g2[2], g1[2] - g3[0], g2[0] - g1[1]];
+        assert_eq!(w.map(f32::to_bits), expected.map(|x| (x + 0.0).to_bits()));
+        let fixed: [I16F16; 3] = flow3.sample_vector(q);
+        for (a, b) in fixed.iter().zip(w) {
+            worst3 = worst3.max((a.to_num::<f32>() - b).abs());
+        }
+    }
+    println!("largest |I16F16 − f32|: 2D {worst2:.1e}, 3D {worst3:.1e}");
+    assert!(worst2 < 1e-2 && worst3 < 1e-2, "{worst2} {worst3}");
+}
+
+/// Any coordinate gives finite components, never a panic.
+#[test]
+fn total_on_bad_input() {
+    let flow = Curl2::new(Simplex::new(0));
+    let flow3 = Curl3::new(Perlin::new(1), Perlin::new(2), Perlin::new(3));
+    for x in [f32::NAN, f32::INFINITY, -f32::INFINITY, f32::MAX, 1e30] {
+        let v: [f32; 2] = flow.sample_vector([x, 0.5]);
+        let w: [f32; 3] = flow3.sample_vector([0.3, x, x]);
+        assert!(
+            v.iter().chain(&w).all(|c| c.is_finite()),
+            "{x}: {v:?} {w:?}"
+        );
+    }
+    for x in [I16F16::MAX, I16F16::MIN, I16F16::DELTA] {
+        let _: [I16F16; 2] = flow.sample_vector([x, x]);
+        let _: [I16F16; 3] = flow3.sample_vector([x, I16F16::MIN, x]);
+    }
+}
