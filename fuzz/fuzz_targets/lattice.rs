@@ -6,13 +6,15 @@
 //! amplify fixed point's roundings) where the input is exact in both; gradients are finite; the batch
 //! path (`sample_lanes`) equals `sample` bit for bit. Periodic noise with arbitrary periods:
 //! refused outside 1..=65536 (and for simplex noise), otherwise within the bound and periodic
-//! bit for bit in fixed point.
+//! bit for bit in fixed point. Curl noise over simplex and Perlin noise: finite, bounded.
 #![no_main]
 
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
 use bandnoise::lattice::{Perlin, TabledPerlin};
+use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, Spec, SpecNoise};
+use bandnoise::vector::{Curl2, Curl3, VectorNoise};
 use bandnoise::{I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
@@ -146,6 +148,30 @@ fn tabled(seed: u32, floats: [f32; 4]) {
     assert_eq!(a.to_bits(), b.to_bits(), "3D {x} {y} {z}");
 }
 
+/// Curl noise over simplex noise (2D) and three Perlin noises (3D): finite, and in fixed
+/// point bounded by the potentials' gradients (a few units per cell).
+fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
+    let flow = Curl2::new(Simplex::new(seed));
+    let flow3 = Curl3::new(
+        Perlin::new(seed),
+        Perlin::new(seed ^ 1),
+        Perlin::new(seed ^ 2),
+    );
+    let v: [f32; 2] = flow.sample_vector([floats[0], floats[1]]);
+    let w: [f32; 3] = flow3.sample_vector([floats[0], floats[1], floats[2]]);
+    assert!(
+        v.iter().chain(&w).all(|c| c.is_finite()),
+        "{floats:?}: {v:?} {w:?}"
+    );
+    let v: [I16F16; 2] = flow.sample_vector([fixed[0], fixed[1]]);
+    let w: [I16F16; 3] = flow3.sample_vector([fixed[0], fixed[1], fixed[2]]);
+    let limit = I16F16::from_num(64);
+    assert!(
+        v.iter().chain(&w).all(|c| c.abs() < limit),
+        "{fixed:?}: {v:?} {w:?}"
+    );
+}
+
 fuzz_target!(|input: Input| {
     let base = Base::ALL[usize::from(input.base) % Base::ALL.len()];
     if !base.is_lattice() && base != Base::Simplex {
@@ -164,6 +190,7 @@ fuzz_target!(|input: Input| {
     check(&spec, floats, fixed, tolerance);
     if base == Base::Simplex {
         assert!(spec.with_period(&input.periods).is_err());
+        curl(input.seed, floats, fixed);
     } else {
         periodic(&spec, input.periods, floats, fixed);
     }

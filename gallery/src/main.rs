@@ -191,7 +191,16 @@ fn run(o: &Options) -> Result<(), String> {
     render_sparse_densities(o)?;
     render_wiener_covariances(o)?;
     render_gabor_variants(o)?;
+    render_curl(o)?;
     render_wavelet_filtering(o)
+}
+
+/// Curl noise (Bridson et al. 2007) over simplex noise: the field's two components (its
+/// potential's gradient turned a quarter turn), each mapped from ±3.
+fn render_curl(o: &Options) -> Result<(), String> {
+    let flow = Curl2::new(Simplex::new(o.seed));
+    render_with(o, "curl-2d-x", 3.0, 1.0, |p, _| flow.sample_vector(p)[0])?;
+    render_with(o, "curl-2d-y", 3.0, 1.0, |p, _| flow.sample_vector(p)[1])
 }
 
 /// Gabor noise (Lagae et al. 2009) beyond its default (`gabor-2d`: anisotropic along x): the
