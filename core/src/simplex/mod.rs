@@ -69,9 +69,11 @@ use crate::lattice::{Lattice, Perlin};
 /// * **Hash and gradients**: [`Perlin`]'s permutation for the seed (seed 0 is Perlin's 2002
 ///   table) and his gradient sets (module docs).
 /// * **Range**: `|n| ≤ 1`, measured: the largest value over all gradient choices, found by a
-///   search over the simplex (`tests/tests/simplex.rs`; it is a single corner's peak in 3D and
-///   4D, two corners' in 1D and three in 2D) sets the scale; [`Noise::amplitude_bound`] adds
-///   2⁻¹⁰ for rounding.
+///   grid search over a skewed cell refined by coordinate ascent (`tests/tests/simplex.rs`;
+///   1D: 81/256 at a cell's middle, exactly), sets the scale; [`Noise::amplitude_bound`] adds
+///   2⁻¹⁰ for rounding. The proved bound is looser: `D + 1` corners at their single peak,
+///   `(8/9)⁴ r/3` times the steepest gradient's length, 1.3 (1D) to 5 (4D) times the maximum.
+///   Measured variance 0.149, 0.200, 0.154, 0.064 (1D–4D).
 /// * **Fixed point** follows `f32` within 5.3·10⁻⁴ (4D; 3.9·10⁻⁴ in 2D, measured over
 ///   2·10⁵ points of `|x| < 256`): each rounding of `τ = 1 − |d|²/r²` is amplified by the
 ///   fourth power's slope and by the scale.
