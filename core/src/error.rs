@@ -91,6 +91,11 @@ pub enum Error {
     Direction,
     /// A Gabor magnitude `K` that is not finite or beyond ±1024.
     Magnitude(f32),
+    /// A cellular noise jitter that is not in `[0, 1]` (see
+    /// [`Cellular::with_jitter`](crate::cellular::Cellular::with_jitter)).
+    Jitter(f32),
+    /// A cellular setting (output, metric, jitter) asked for another noise.
+    NotCellular(&'static str),
     /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
     ///
     /// [`Spec::build`]: crate::spec::Spec::build
@@ -214,6 +219,11 @@ impl fmt::Display for Error {
                 f,
                 "Gabor magnitude {} must be finite and within ±1024",
                 Shortest(*k)
+            ),
+            Error::Jitter(j) => write!(f, "cellular jitter {} must be in [0, 1]", Shortest(*j)),
+            Error::NotCellular(noise) => write!(
+                f,
+                "{noise} noise has no cellular settings (output, metric and jitter are for cellular noise)"
             ),
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")

@@ -83,6 +83,7 @@
 
 mod arch;
 pub mod batch;
+pub mod cellular;
 mod decimal;
 mod error;
 pub mod fractal;
@@ -107,6 +108,7 @@ pub use real::{I16F16, Real};
 /// The traits and types most programs need: `use bandnoise::prelude::*;`.
 pub mod prelude {
     pub use crate::batch::Grid;
+    pub use crate::cellular::Cellular;
     pub use crate::fractal::{Fractal, Kind, Octaves};
     pub use crate::impulse::{Gabor, SparseConvolution};
     pub use crate::lattice::{

@@ -68,6 +68,13 @@ pub(crate) mod sealed {
         /// coordinate exactly to 2⁻¹⁶ in 64-bit integers (`⌊Σx·F⌋` in its bits), so no
         /// coordinate overflows: a skewed cell beyond I16F16's range is still a cell.
         fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]);
+        /// The Euclidean length `√(Σ vₐ²)` of a vector whose components are below 8 in
+        /// magnitude (cellular noise's offsets). Floats sum the squares left to right from 0
+        /// and take [`Real::sqrt`](crate::Real::sqrt). Fixed point sums the exact squares of
+        /// the bits (2⁻³² units, in `u64`) and takes their integer square root (rounded down),
+        /// so a short vector keeps its length where rounded squares would lose it: a length
+        /// of 2⁻⁹ has a square below 2⁻¹⁶.
+        fn norm<const D: usize>(v: [Self; D]) -> Self;
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -132,6 +139,15 @@ pub(crate) mod sealed {
                         (cell[a], frac[a]) = (p[a] + s).split();
                     }
                     (cell, frac)
+                }
+                #[inline]
+                fn norm<const D: usize>(v: [Self; D]) -> Self {
+                    use crate::Real;
+                    let mut sum = 0.0;
+                    for x in v {
+                        sum += x * x;
+                    }
+                    sum.sqrt()
                 }
             }
         };
@@ -198,6 +214,16 @@ pub(crate) mod sealed {
                 frac[a] = I16F16::from_bits((v & 0xFFFF) as i32);
             }
             (cell, frac)
+        }
+        #[inline]
+        fn norm<const D: usize>(v: [Self; D]) -> Self {
+            // Each |bits| < 2¹⁹: the sum of squares is below 2⁴⁰; its root below 2²⁰.
+            let mut sum = 0u64;
+            for x in v {
+                let b = x.to_bits().unsigned_abs() as u64;
+                sum += b * b;
+            }
+            I16F16::from_bits(super::isqrt(sum) as i32)
         }
     }
 }
