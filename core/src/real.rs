@@ -142,12 +142,11 @@ pub(crate) mod sealed {
                 }
                 #[inline]
                 fn norm<const D: usize>(v: [Self; D]) -> Self {
-                    use crate::Real;
                     let mut sum = 0.0;
                     for x in v {
                         sum += x * x;
                     }
-                    sum.sqrt()
+                    crate::Real::sqrt(sum)
                 }
             }
         };
