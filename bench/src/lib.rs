@@ -11,6 +11,7 @@
 //! (`scripts/bench-peers.sh` does both).
 
 use bandnoise::batch::Grid;
+use bandnoise::cellular::Cellular;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
@@ -60,7 +61,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 17] = [
+pub const FUNCTIONS: [&str; 19] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -78,6 +79,8 @@ pub const FUNCTIONS: [&str; 17] = [
     "sparse-3d",
     "simplex-2d",
     "simplex-3d",
+    "cellular-2d",
+    "cellular-3d",
 ];
 
 /// Who computes it (a column of the table). The first two are bandnoise.
@@ -179,7 +182,9 @@ fn at<const D: usize>(x: f32, y: f32) -> [f32; D] {
 /// The workload `function` by `implementation` on `layout`, if that implementation has it.
 #[must_use]
 pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<Run> {
-    use fastnoise_lite::{FastNoiseLite, FractalType, NoiseType};
+    use fastnoise_lite::{
+        CellularDistanceFunction, CellularReturnType, FastNoiseLite, FractalType, NoiseType,
+    };
     use noise::{MultiFractal, NoiseFn};
     use noise_functions::Noise as _;
 
@@ -260,6 +265,46 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         }
         ("simplex-3d", "libnoise") => {
             let n = libnoise::Source::<3>::simplex(0);
+            l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
+        }
+        // Cellular noise: F1, Euclidean, jitter 1 in every implementation (the peers'
+        // defaults differ: FastNoise Lite's is the squared distance, `noise`'s the cell value).
+        ("cellular-2d", "bandnoise") => l.point::<_, 2>(Cellular::new(0)),
+        ("cellular-2d", "bandnoise-batch") => l.batch::<_, 2>(Cellular::new(0)),
+        ("cellular-3d", "bandnoise") => l.point::<_, 3>(Cellular::new(0)),
+        ("cellular-3d", "bandnoise-batch") => l.batch::<_, 3>(Cellular::new(0)),
+        ("cellular-2d" | "cellular-3d", "fastnoise-lite") => {
+            let mut n = fast(NoiseType::Cellular, None);
+            n.set_cellular_distance_function(Some(CellularDistanceFunction::Euclidean));
+            n.set_cellular_return_type(Some(CellularReturnType::Distance));
+            if function == "cellular-2d" {
+                l.peer2(move |x, y| n.get_noise_2d(x, y))
+            } else {
+                l.peer2(move |x, y| n.get_noise_3d(x, y, Z))
+            }
+        }
+        ("cellular-2d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::CellDistance::default().sample2([x, y]))
+        }
+        ("cellular-3d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::CellDistance::default().sample3([x, y, Z]))
+        }
+        ("cellular-2d", "noise") => {
+            let n =
+                noise::Worley::new(0).set_return_type(noise::core::worley::ReturnType::Distance);
+            l.peer_f64::<2>(move |p| n.get(p))
+        }
+        ("cellular-3d", "noise") => {
+            let n =
+                noise::Worley::new(0).set_return_type(noise::core::worley::ReturnType::Distance);
+            l.peer_f64::<3>(move |p| n.get(p))
+        }
+        ("cellular-2d", "libnoise") => {
+            let n = libnoise::Source::<2>::worley(0);
+            l.peer_f64::<2>(move |p| libnoise::Generator::sample(&n, p))
+        }
+        ("cellular-3d", "libnoise") => {
+            let n = libnoise::Source::<3>::worley(0);
             l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
         }
 

@@ -96,36 +96,61 @@ impl Metric {
             Metric::Chebyshev => "chebyshev",
         }
     }
+}
 
-    /// The key the search compares for one axis's offset `d ≥ 0`: `d²` for the Euclidean
-    /// metrics, `d` otherwise.
+/// How the search compares distances: a key per axis and a way to combine keys, both growing
+/// with each axis's offset (which lets the search drop a prefix of axes already out of reach).
+/// The search is compiled once per kind of key, so its inner loops do not branch on the
+/// metric.
+trait Keys {
+    /// The key of one axis's offset `d ≥ 0`.
+    fn axis_key<R: Real>(d: R) -> R;
+    /// Two keys combined.
+    fn combine<R: Real>(a: R, b: R) -> R;
+}
+
+/// The Euclidean metrics' keys: squares, summed.
+struct Squares;
+/// Manhattan's: offsets, summed.
+struct Sum;
+/// Chebyshev's: offsets, their maximum.
+struct Max;
+
+impl Keys for Squares {
     #[inline]
-    fn axis_key<R: Real>(self, d: R) -> R {
-        match self {
-            Metric::Euclidean | Metric::EuclideanSquared => d.mul_rn(d),
-            Metric::Manhattan | Metric::Chebyshev => d,
-        }
+    fn axis_key<R: Real>(d: R) -> R {
+        d.mul_rn(d)
     }
-
-    /// Two keys combined: sum, or maximum for Chebyshev. Both grow with each axis's key, which
-    /// is what lets the search drop a prefix of axes already out of reach.
     #[inline]
-    fn combine<R: Real>(self, a: R, b: R) -> R {
-        match self {
-            Metric::Chebyshev => {
-                if b > a {
-                    b
-                } else {
-                    a
-                }
-            }
-            _ => a + b,
-        }
+    fn combine<R: Real>(a: R, b: R) -> R {
+        a + b
     }
 }
 
-/// The nearest and second-nearest feature points found so far: their keys (as
-/// [`Metric::axis_key`] and [`Metric::combine`] make them), their offsets from the point, and
+impl Keys for Sum {
+    #[inline]
+    fn axis_key<R: Real>(d: R) -> R {
+        d
+    }
+    #[inline]
+    fn combine<R: Real>(a: R, b: R) -> R {
+        a + b
+    }
+}
+
+impl Keys for Max {
+    #[inline]
+    fn axis_key<R: Real>(d: R) -> R {
+        d
+    }
+    #[inline]
+    fn combine<R: Real>(a: R, b: R) -> R {
+        if b > a { b } else { a }
+    }
+}
+
+/// The nearest and second-nearest feature points found so far: their keys (as a [`Keys`]
+/// makes them), their offsets from the point, and
 /// the nearest one's cell hash.
 struct Nearest<R, const D: usize> {
     keys: [R; 2],
@@ -191,6 +216,48 @@ const UNIT: i32 = 1 << 16;
 /// The most rings searched around the point's cell: ring `r + 1` is at least `r` away along
 /// some axis, and `F2` is at most 4.5 away (Manhattan, 4D, jitter 1; see [`Cellular`]).
 const MAX_RING: i32 = 5;
+
+/// The 3ᴰ offsets of rings 0 and 1 in `D` dimensions (first `NEAR_CELLS[D]` entries): the
+/// point's own cell, then the cells sharing a face with it, then an edge, and so on, so the
+/// nearest boxes come first and the `F` they find prunes the farther ones (Worley's order).
+const NEAR_ORDER: [[[i8; 4]; 81]; 5] = [
+    near_order(0),
+    near_order(1),
+    near_order(2),
+    near_order(3),
+    near_order(4),
+];
+
+/// `3ᴰ`.
+const NEAR_CELLS: [usize; 5] = [1, 3, 9, 27, 81];
+
+const fn near_order(dims: usize) -> [[i8; 4]; 81] {
+    let mut out = [[0i8; 4]; 81];
+    let mut n = 0;
+    // By the number of non-zero offsets, then in odometer order.
+    let mut nonzero = 0;
+    while nonzero <= dims {
+        let mut i = 0;
+        while i < NEAR_CELLS[dims] {
+            let (mut k, mut rest, mut count, mut a) = ([0i8; 4], i, 0, 0);
+            while a < dims {
+                k[a] = (rest % 3) as i8 - 1;
+                if k[a] != 0 {
+                    count += 1;
+                }
+                rest /= 3;
+                a += 1;
+            }
+            if count == nonzero {
+                out[n] = k;
+                n += 1;
+            }
+            i += 1;
+        }
+        nonzero += 1;
+    }
+    out
+}
 
 /// Cellular noise (Worley 1996) in 1 to 4 dimensions: see the [module docs](self).
 ///
@@ -360,9 +427,8 @@ impl Cellular {
     }
 
     /// Finds the nearest feature point (and the second-nearest where the output needs it).
-    fn search<R: Real, const D: usize>(&self, p: [R; D]) -> Nearest<R, D> {
+    fn search<R: Real, const D: usize, K: Keys>(&self, p: [R; D]) -> Nearest<R, D> {
         let (cell, frac) = split_point(p);
-        let metric = self.metric;
         let needs_f2 = self.output.needs_f2();
         let (lo, hi) = self.extent();
         let mut best = Nearest {
@@ -378,7 +444,7 @@ impl Cellular {
             let mut q = [R::ZERO; D];
             for a in 0..D {
                 q[a] = R::from_ratio(k[a] * UNIT + offsets[a], 16) - frac[a];
-                d = metric.combine(d, metric.axis_key(q[a].abs()));
+                d = K::combine(d, K::axis_key(q[a].abs()));
             }
             if d < best.keys[0] {
                 best.keys = [d, best.keys[0]];
@@ -393,7 +459,7 @@ impl Cellular {
         let gap = |a: usize, k: i32| -> R {
             let low = R::from_ratio(k * UNIT + lo, 16) - frac[a];
             let high = frac[a] - R::from_ratio(k * UNIT + hi, 16);
-            metric.axis_key(if low > R::ZERO {
+            K::axis_key(if low > R::ZERO {
                 low
             } else if high > R::ZERO {
                 high
@@ -402,15 +468,36 @@ impl Cellular {
             })
         };
 
-        // Ring 0: the point's own cell.
+        let reach = |best: &Nearest<R, D>| best.keys[needs_f2 as usize];
         let start = self.hash.start();
-        offer(&[0; D], self.hash.hash(cell), &mut best);
+
+        // Rings 0 and 1, the 3ᴰ cells around the point's, nearest boxes first (see
+        // `NEAR_ORDER`); a cell whose box of possible points is out of reach is skipped before
+        // it is hashed. Axis a's box keys for offsets −1, 0, 1:
+        let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
+        for k in &NEAR_ORDER[D][..NEAR_CELLS[D]] {
+            let k: [i32; D] = core::array::from_fn(|a| k[a] as i32);
+            let mut box_key = R::ZERO;
+            for a in 0..D {
+                box_key = K::combine(box_key, near_gaps[a][(k[a] + 1) as usize]);
+            }
+            if box_key >= reach(&best) {
+                continue;
+            }
+            let mut h = start;
+            for a in 0..D {
+                h = self.hash.step(h, cell[a].wrapping_add(k[a]) as u32);
+            }
+            offer(&k, h, &mut best);
+        }
 
         // The smallest margin between a cell's points and its borders, so ring r + 1 is at
         // least r + margin away along some axis.
         let margin = R::from_ratio(lo.min(UNIT - hi), 16);
-        for r in 1..=MAX_RING {
-            let reach = |best: &Nearest<R, D>| best.keys[needs_f2 as usize];
+        for r in 2..=MAX_RING {
+            if K::axis_key(R::from_i32(r - 1) + margin) >= reach(&best) {
+                break;
+            }
             // The odometer over the ring: cells k in [−r, r]ᴰ with some |kₐ| = r, the first
             // axis slowest. `chain[a]`, `acc[a]`, `inner[a]`: the hash, the key and whether
             // every |kᵢ| < r over axes 0..=a.
@@ -431,7 +518,7 @@ impl Cellular {
                         // Every other axis is inside the ring: only ±r are on it.
                         k[a] = r;
                     }
-                    acc[a] = metric.combine(g, gap(a, k[a]));
+                    acc[a] = K::combine(g, gap(a, k[a]));
                     if acc[a] >= reach(&best) {
                         // Every cell with this prefix is out of reach.
                         for later in k.iter_mut().skip(a + 1) {
@@ -464,11 +551,6 @@ impl Cellular {
                 }
                 from = a;
             }
-            // Ring r + 1 is at least r + margin away.
-            let next = metric.axis_key(R::from_i32(r) + margin);
-            if next >= reach(&best) {
-                break;
-            }
         }
         best
     }
@@ -479,7 +561,11 @@ macro_rules! cellular_impls {
         impl<R: Real> crate::Noise<R, $d> for Cellular {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
-                let nearest = self.search(p);
+                let nearest = match self.metric {
+                    Metric::Euclidean | Metric::EuclideanSquared => self.search::<R, $d, Squares>(p),
+                    Metric::Manhattan => self.search::<R, $d, Sum>(p),
+                    Metric::Chebyshev => self.search::<R, $d, Max>(p),
+                };
                 let f = |i: usize| nearest.distance(self.metric, i);
                 match self.output {
                     Output::F1 => f(0),
