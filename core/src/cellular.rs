@@ -36,8 +36,14 @@
 //! ½ in the Euclidean metric); the cell value is in `[−1, 1)`. Ties between equally near
 //! points go to the first found in the search order (they do not change `F1` or `F2`).
 //!
-//! Cellular noise has no analytic gradient here (`F1` is not differentiable on cell borders,
-//! and the cell value is piecewise constant), and no periodic variant yet.
+//! **Gradients** ([`NoiseGradient`](crate::NoiseGradient)) are analytic: each distance's
+//! gradient is the metric's derivative along the offset to its feature point (Euclidean: the
+//! unit vector away from the point). They jump where the nearest point changes (`F1` has kinks
+//! on cell borders) and the cell value's is 0 (it is piecewise constant).
+//!
+//! No periodic variant yet (wrapping the cells to a period, as
+//! [`Periodic`](crate::lattice::Periodic) does for the lattice noises, would work: the search
+//! hashes whole cells).
 //!
 //! # Examples
 //!
@@ -556,30 +562,94 @@ impl Cellular {
     }
 }
 
+impl<R: Real, const D: usize> Nearest<R, D> {
+    /// `∇F1` (`i = 0`) or `∇F2` (`i = 1`) in `metric`, given that distance `f`: the offset
+    /// points from the sample to the feature point, so the distance grows against it. Where
+    /// the derivative does not exist (at the point itself, on a Manhattan or Chebyshev kink)
+    /// it is 0 along the axes concerned (Chebyshev: the first axis of largest offset moves it).
+    fn gradient(&self, metric: Metric, i: usize, f: R) -> [R; D] {
+        let q = self.offsets[i];
+        let sign = |x: R| {
+            if x > R::ZERO {
+                R::NEG_ONE
+            } else if x < R::ZERO {
+                R::ONE
+            } else {
+                R::ZERO
+            }
+        };
+        match metric {
+            Metric::Euclidean => {
+                if f > R::ZERO {
+                    q.map(|x| (-x).div(f))
+                } else {
+                    [R::ZERO; D]
+                }
+            }
+            Metric::EuclideanSquared => q.map(|x| -(x + x)),
+            Metric::Manhattan => q.map(sign),
+            Metric::Chebyshev => {
+                let mut top = 0;
+                for a in 1..D {
+                    if q[a].abs() > q[top].abs() {
+                        top = a;
+                    }
+                }
+                core::array::from_fn(|a| if a == top { sign(q[a]) } else { R::ZERO })
+            }
+        }
+    }
+}
+
+impl Cellular {
+    /// The value and, where `GRADIENT`, the gradient at `p`.
+    #[inline]
+    fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(&self, p: [R; D]) -> (R, [R; D]) {
+        let nearest = match self.metric {
+            Metric::Euclidean | Metric::EuclideanSquared => self.search::<R, D, Squares>(p),
+            Metric::Manhattan => self.search::<R, D, Sum>(p),
+            Metric::Chebyshev => self.search::<R, D, Max>(p),
+        };
+        let f = |i: usize| nearest.distance(self.metric, i);
+        let g = |i: usize| {
+            if GRADIENT {
+                nearest.gradient(self.metric, i, f(i))
+            } else {
+                [R::ZERO; D]
+            }
+        };
+        let (value, gradient) = match self.output {
+            Output::F1 => (f(0), g(0)),
+            Output::F2 => (f(1), g(1)),
+            Output::F2MinusF1 => {
+                let (g1, g0) = (g(1), g(0));
+                (f(1) - f(0), core::array::from_fn(|a| g1[a] - g0[a]))
+            }
+            Output::CellValue => (Self::value_of_key(nearest.hash), [R::ZERO; D]),
+        };
+        (value.canonical(), gradient.map(R::canonical))
+    }
+}
+
 macro_rules! cellular_impls {
     ($($d:literal),*) => {$(
         impl<R: Real> crate::Noise<R, $d> for Cellular {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
-                let nearest = match self.metric {
-                    Metric::Euclidean | Metric::EuclideanSquared => self.search::<R, $d, Squares>(p),
-                    Metric::Manhattan => self.search::<R, $d, Sum>(p),
-                    Metric::Chebyshev => self.search::<R, $d, Max>(p),
-                };
-                let f = |i: usize| nearest.distance(self.metric, i);
-                match self.output {
-                    Output::F1 => f(0),
-                    Output::F2 => f(1),
-                    Output::F2MinusF1 => f(1) - f(0),
-                    Output::CellValue => Self::value_of_key(nearest.hash),
-                }
-                .canonical()
+                self.evaluate::<R, $d, false>(p).0
             }
             fn amplitude_bound(&self) -> f32 {
                 match self.output {
                     Output::CellValue => 1.0,
                     _ => self.distance_bound($d),
                 }
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Cellular {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                self.evaluate::<R, $d, true>(p)
             }
         }
     )*};

@@ -23,6 +23,7 @@
 //! wiener seed=4 covariance=band-pass
 //! gabor seed=5 frequency=2 bandwidth=0.5 direction=1,1 orientation=anisotropic
 //! simplex seed=9 fbm octaves=5
+//! cellular seed=2 output=f2-f1 metric=manhattan jitter=0.8
 //! ```
 //!
 //! | setting | value | default |
@@ -43,6 +44,9 @@
 //! | `orientation=` | `anisotropic`, `isotropic` or `hybrid` (Gabor noise, [`Orientation`]) | `anisotropic` |
 //! | `envelope=` | `hann` or `truncated` (Gabor noise, [`Envelope`]) | `hann` |
 //! | `magnitude=` | Gabor's `K`, its standard deviation, within `±1024` | `1` |
+//! | `output=` | `f1`, `f2`, `f2-f1` or `value` (cellular noise, [`Output`]) | `f1` |
+//! | `metric=` | `euclidean`, `squared`, `manhattan` or `chebyshev` (cellular noise, [`Metric`]) | `euclidean` |
+//! | `jitter=` | how far cellular noise's points stray from their cells' centres, `0` to `1` ([`Cellular::with_jitter`]) | `1` |
 //! | `covariance=` | `low-pass` or `band-pass` (Wiener noise, [`Covariance`]) | `low-pass` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
@@ -91,6 +95,7 @@ use core::fmt;
 use core::str::FromStr;
 
 use crate::batch::{Grid, LANES};
+use crate::cellular::{Cellular, Metric, Output};
 use crate::decimal;
 use crate::fractal::{Fractal, Kind, Octaves};
 use crate::impulse::{
@@ -138,11 +143,13 @@ pub enum Base {
     Gabor,
     /// [`Simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D. Text: `simplex`.
     Simplex,
+    /// [`Cellular`]: Worley's cellular noise, 1D–4D. Text: `cellular`.
+    Cellular,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 12] = [
+    pub const ALL: [Base; 13] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -155,6 +162,7 @@ impl Base {
         Base::Wiener,
         Base::Gabor,
         Base::Simplex,
+        Base::Cellular,
     ];
 
     /// The name in the text form.
@@ -173,6 +181,7 @@ impl Base {
             Base::Wiener => "wiener",
             Base::Gabor => "gabor",
             Base::Simplex => "simplex",
+            Base::Cellular => "cellular",
         }
     }
 
@@ -190,7 +199,9 @@ impl Base {
     /// a cell's corners).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !self.is_wavelet() && !self.is_impulse() && !matches!(self, Base::Wiener | Base::Simplex)
+        !self.is_wavelet()
+            && !self.is_impulse()
+            && !matches!(self, Base::Wiener | Base::Simplex | Base::Cellular)
     }
 
     /// Whether the noise is made of random impulses (and has impulse settings: density,
@@ -236,6 +247,10 @@ pub struct Spec {
     covariance: Covariance,
     /// Gabor noise's settings; the defaults for every other base.
     gabor: GaborParameters,
+    /// Cellular noise's output, metric and jitter (checked); the defaults for every other base.
+    output: Output,
+    metric: Metric,
+    jitter: f32,
     fractal: Option<(Kind, Octaves)>,
 }
 
@@ -260,6 +275,9 @@ impl Spec {
             per_cell: 0,
             covariance: Covariance::LowPass,
             gabor: GaborParameters::DEFAULT,
+            output: Output::F1,
+            metric: Metric::Euclidean,
+            jitter: 1.0,
             fractal: None,
         }
     }
@@ -546,6 +564,67 @@ impl Spec {
         self.gabor.magnitude
     }
 
+    /// Cellular noise returning `output`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotCellular`] unless the base is [`Base::Cellular`].
+    pub fn with_output(mut self, output: Output) -> Result<Self, Error> {
+        self.cellular_only()?;
+        self.output = output;
+        Ok(self)
+    }
+
+    /// Cellular noise measuring distances with `metric`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotCellular`] unless the base is [`Base::Cellular`].
+    pub fn with_metric(mut self, metric: Metric) -> Result<Self, Error> {
+        self.cellular_only()?;
+        self.metric = metric;
+        Ok(self)
+    }
+
+    /// Cellular noise with `jitter` (see [`Cellular::with_jitter`]).
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotCellular`] unless the base is [`Base::Cellular`]; [`Error::Jitter`] unless
+    /// `0 ≤ jitter ≤ 1`.
+    pub fn with_jitter(mut self, jitter: f32) -> Result<Self, Error> {
+        self.cellular_only()?;
+        // Checked (and rounded) as the noise will be, so `build` cannot fail on it.
+        self.jitter = Cellular::new(0).with_jitter(jitter)?.jitter();
+        Ok(self)
+    }
+
+    fn cellular_only(&self) -> Result<(), Error> {
+        if self.base == Base::Cellular {
+            Ok(())
+        } else {
+            Err(Error::NotCellular(self.base.name()))
+        }
+    }
+
+    /// Cellular noise's output (the default for other bases).
+    #[must_use]
+    pub const fn output(&self) -> Output {
+        self.output
+    }
+
+    /// Cellular noise's metric (the default for other bases).
+    #[must_use]
+    pub const fn metric(&self) -> Metric {
+        self.metric
+    }
+
+    /// Cellular noise's jitter (the default for other bases).
+    #[must_use]
+    pub const fn jitter(&self) -> f32 {
+        self.jitter
+    }
+
     /// Wiener noise with `covariance`.
     ///
     /// # Errors
@@ -711,6 +790,12 @@ impl Spec {
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
             Base::Simplex => Any::Simplex(Simplex::new(s)),
+            Base::Cellular => Any::Cellular(
+                Cellular::new(s)
+                    .with_output(self.output)
+                    .with_metric(self.metric)
+                    .with_jitter(self.jitter)?,
+            ),
             Base::Gabor => match D {
                 1 => Any::Gabor1(self.gabor::<1>()?),
                 2 => Any::Gabor2(self.gabor::<2>()?),
@@ -800,6 +885,15 @@ impl fmt::Display for Spec {
                 }
                 Err(n) => write!(f, " count={n}")?,
             }
+        }
+        if self.base == Base::Cellular {
+            write!(
+                f,
+                " output={} metric={} jitter=",
+                self.output.name(),
+                self.metric.name()
+            )?;
+            decimal::write_f32(f, self.jitter)?;
         }
         if self.base == Base::Wiener {
             f.write_str(match self.covariance {
@@ -903,10 +997,10 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
-     wavelet, multiband, sparse, wiener, gabor)";
+     wavelet, multiband, sparse, wiener, gabor, simplex, cellular)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
      distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
-     direction=, orientation=, envelope=, magnitude=, fbm, turbulence, ridged, octaves=, \
+     direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, fbm, turbulence, ridged, octaves=, \
      lacunarity=, gain=)";
 
 impl FromStr for Spec {
@@ -954,6 +1048,9 @@ impl FromStr for Spec {
                 "orientation" => &mut seen.orientation,
                 "envelope" => &mut seen.envelope,
                 "magnitude" => &mut seen.magnitude,
+                "output" => &mut seen.output,
+                "metric" => &mut seen.metric,
+                "jitter" => &mut seen.jitter,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -994,6 +1091,13 @@ impl FromStr for Spec {
                     position: at,
                     expected: "Gabor settings only for Gabor noise",
                     refused: Some(Error::NotGabor(base.name())),
+                });
+            }
+            if matches!(key, "output" | "metric" | "jitter") && base != Base::Cellular {
+                return Err(ParseError {
+                    position: at,
+                    expected: "cellular settings only for cellular noise",
+                    refused: Some(Error::NotCellular(base.name())),
                 });
             }
             if key == "covariance" && base != Base::Wiener {
@@ -1042,6 +1146,29 @@ impl FromStr for Spec {
                         _ => return Err(err(value_at, E)),
                     };
                     spec = spec.with_weights(weights).map_err(|e| refused(at, E, e))?;
+                }
+                "output" => {
+                    const E: &str = "an output (f1, f2, f2-f1, value)";
+                    let v = needs_value(E)?;
+                    let output = Output::ALL
+                        .into_iter()
+                        .find(|o| o.name() == v)
+                        .ok_or(err(value_at, E))?;
+                    spec = spec.with_output(output).map_err(|e| refused(at, E, e))?;
+                }
+                "metric" => {
+                    const E: &str = "a metric (euclidean, squared, manhattan, chebyshev)";
+                    let v = needs_value(E)?;
+                    let metric = Metric::ALL
+                        .into_iter()
+                        .find(|m| m.name() == v)
+                        .ok_or(err(value_at, E))?;
+                    spec = spec.with_metric(metric).map_err(|e| refused(at, E, e))?;
+                }
+                "jitter" => {
+                    const E: &str = "a jitter in [0, 1]";
+                    let v = decimal::parse_f32(needs_value(E)?).ok_or(err(value_at, E))?;
+                    spec = spec.with_jitter(v).map_err(|e| refused(value_at, E, e))?;
                 }
                 "covariance" => {
                     const E: &str = "a covariance (low-pass, band-pass)";
@@ -1313,6 +1440,9 @@ struct Seen {
     orientation: bool,
     envelope: bool,
     magnitude: bool,
+    output: bool,
+    metric: bool,
+    jitter: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -1465,6 +1595,7 @@ enum Any<S: Tiles> {
     Gabor2(Gabor<2>),
     Gabor3(Gabor<3>),
     Simplex(Simplex),
+    Cellular(Cellular),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1600,6 +1731,7 @@ macro_rules! spec_noise {
                     Any::M61(n) => with_period(n, period, op),
                     Any::M4093(n) => with_period(n, period, op),
                     Any::Simplex(n) => op.run(n),
+                    Any::Cellular(n) => op.run(n),
                     Any::$sparse(n) => op.run(n),
                     Any::$wiener(n) => op.run(n),
                     $(Any::$gabor(n) => op.run(n),)?

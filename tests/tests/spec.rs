@@ -2,6 +2,7 @@
 //! describes bit for bit, the text form round-trips, bad text is an error with a position (never
 //! a panic), and every noise type of the crate is described.
 
+use bandnoise::cellular::{Cellular, Metric, Output};
 use bandnoise::impulse::{Envelope, Gabor, Orientation};
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
 use bandnoise::prelude::*;
@@ -511,6 +512,7 @@ fn every_noise_type_in_core_is_described() {
         ("WienerNoise", "wiener"),
         ("Gabor", "gabor"),
         ("Simplex", "simplex"),
+        ("Cellular", "cellular"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -708,6 +710,75 @@ fn simplex_specs_sample_their_typed_noise_bit_for_bit() {
     );
 }
 
+/// A cellular spec samples the typed noise bit for bit (value and gradient, f32 and I16F16,
+/// 1D–4D, every output and metric, and under a fractal sum); its settings print and read back,
+/// and are refused for other noises and out of range.
+#[test]
+fn cellular_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(189);
+    for output in Output::ALL {
+        for metric in Metric::ALL {
+            let text = format!(
+                "cellular seed=9 output={} metric={} jitter=0.75",
+                output.name(),
+                metric.name()
+            );
+            let spec: Spec = text.parse().expect("valid");
+            assert_eq!(spec.to_string(), text);
+            let typed = Cellular::new(9)
+                .with_output(output)
+                .with_metric(metric)
+                .with_jitter(0.75)
+                .unwrap();
+            same_bits::<2, _>(&spec, &typed, &mut rng);
+            same_bits::<3, _>(&spec, &typed, &mut rng);
+        }
+    }
+    let spec = Spec::new(Base::Cellular, 4);
+    same_bits::<1, _>(&spec, &Cellular::new(4), &mut rng);
+    same_bits::<4, _>(&spec, &Cellular::new(4), &mut rng);
+    assert_eq!(
+        spec.to_string(),
+        "cellular seed=4 output=f1 metric=euclidean jitter=1"
+    );
+    let fbm: Spec = "cellular seed=9 fbm octaves=3".parse().expect("valid");
+    same_bits::<2, _>(
+        &fbm,
+        &Fractal::fbm(Cellular::new(9), Octaves::new(3, 1.99, 0.5).unwrap()),
+        &mut rng,
+    );
+    // A jitter that is not a multiple of 2⁻¹⁶ is rounded, and prints as rounded.
+    let odd: Spec = "cellular jitter=0.3".parse().expect("valid");
+    assert_eq!(
+        odd.jitter(),
+        Cellular::new(0).with_jitter(0.3).unwrap().jitter()
+    );
+    assert_eq!(odd.to_string().parse::<Spec>().unwrap(), odd);
+    for (text, refused) in [
+        ("cellular jitter=1.5", Error::Jitter(1.5)),
+        ("cellular jitter=-0.25", Error::Jitter(-0.25)),
+        ("perlin metric=manhattan", Error::NotCellular("perlin")),
+        ("simplex output=f2", Error::NotCellular("simplex")),
+        ("cellular period=4,4", Error::NotPeriodic("cellular")),
+    ] {
+        let e = text.parse::<Spec>().unwrap_err();
+        assert_eq!(e.refused(), Some(refused), "{text}");
+    }
+    for text in [
+        "cellular output=f3",
+        "cellular metric=minkowski",
+        "cellular jitter=x",
+    ] {
+        let e = text.parse::<Spec>().unwrap_err();
+        assert_eq!(e.refused(), None, "{text}");
+        assert!(e.position() > 0, "{text}");
+    }
+    assert_eq!(
+        Spec::new(Base::Perlin, 0).with_jitter(0.5).unwrap_err(),
+        Error::NotCellular("perlin")
+    );
+}
+
 /// A Wiener spec samples the typed noise it names bit for bit (value and gradient, f32 and
 /// I16F16, 1D–4D, both covariances), and a covariance is refused for other noises.
 #[test]
@@ -883,8 +954,8 @@ fn consumers_take_their_noises_from_the_description() {
             "{what} ({path}) does not take its noises from bandnoise::spec"
         );
     }
-    // Every base is a lattice noise the helper knows, a wavelet, impulse, Wiener or simplex
-    // noise.
+    // Every base is a lattice noise the helper knows, a wavelet, impulse, Wiener, simplex or
+    // cellular noise.
     for base in Base::ALL {
         if base.is_lattice() {
             let _ = bandnoise_tests::Lattice::of(base, 0);
@@ -892,7 +963,7 @@ fn consumers_take_their_noises_from_the_description() {
             assert!(
                 base.is_wavelet()
                     || base.is_impulse()
-                    || matches!(base, Base::Wiener | Base::Simplex),
+                    || matches!(base, Base::Wiener | Base::Simplex | Base::Cellular),
                 "{base}"
             );
         }
