@@ -17,7 +17,7 @@ output_names=("baseline u8" "perlin 2D I16F16 u8" "mnoise 2D I16F16 u8" "perlin 
 impulse_names=("baseline impulse" "sparse 2D I16F16" "sparse 2D f32" "sparse 3D I16F16" "sparse 3D f32"
     "sparse 3D I16F16 3 per cell" "wiener 2D I16F16" "wiener 2D f32" "wiener band-pass 2D I16F16"
     "wiener 3D I16F16" "gabor 2D I16F16" "gabor 2D f32" "gabor 3D I16F16" "gabor 2D I16F16 isotropic"
-    "simplex 2D I16F16" "simplex 2D f32" "simplex 3D I16F16")
+    "simplex 2D I16F16" "simplex 2D f32" "simplex 3D I16F16" "cellular 2D I16F16" "cellular 2D f32")
 samples=16
 trace="-accel tcg,one-insn-per-tb=on -d exec,nochain -D $work/exec.log"
 
@@ -92,9 +92,9 @@ for name in ("gabor 2D I16F16", "gabor 2D I16F16 isotropic", "gabor 3D I16F16"):
     perlin = rows[name.replace(" isotropic", "").replace("gabor", "perlin")]
     print(f"Cortex-M0: {name} (16 impulses per kernel) {float(rows[name]):.0f} instructions per "
           f"sample, {float(rows[name]) / float(perlin):.1f}× Perlin")
-# Issue 19, point 7: simplex noise in fixed point on the firmware cores (reported).
-for name in ("simplex 2D I16F16", "simplex 3D I16F16"):
-    perlin = rows[name.replace("simplex", "perlin")]
+# Issue 19, point 7: simplex and cellular noise in fixed point on the firmware cores (reported).
+for name in ("simplex 2D I16F16", "simplex 3D I16F16", "cellular 2D I16F16"):
+    perlin = rows[name.replace("simplex", "perlin").replace("cellular", "perlin")]
     print(f"Cortex-M0: {name} {float(rows[name]):.0f} instructions per sample, "
           f"{float(rows[name]) / float(perlin):.2f}× Perlin")
 sys.exit("goal missed" if failed else 0)

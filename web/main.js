@@ -32,6 +32,7 @@ const LABELS = {
   wiener: 'Wiener-interpolated (Lewis)',
   gabor: 'Gabor (Lagae et al.)',
   simplex: 'simplex (Perlin 2001, Gustavson)',
+  cellular: 'cellular, F1 (Worley)',
 };
 
 function fillKinds() {

@@ -1,6 +1,7 @@
 //! The workloads of `scripts/count-instructions.sh`: each runs [`SAMPLES`] samples of one noise
 //! between two marker calls, so QEMU's instruction trace can count what one sample costs.
 
+use bandnoise::cellular::Cellular;
 use bandnoise::impulse::{Gabor, Orientation, SparseConvolution};
 use bandnoise::lattice::{MNoise, Perlin};
 use bandnoise::levels::Levels;
@@ -44,9 +45,10 @@ pub const OUTPUT_NAMES: [&str; 7] = [
 /// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
 /// density (10 impulses per kernel volume) and at 3 impulses per cell, Wiener noise, and Gabor
 /// noise at its defaults (16 impulses per kernel volume), and simplex noise (the noises added
-/// after the lattice noises), with their own baseline. A program of its own (the firmware's
+/// after the lattice noises) and cellular noise (F1, Euclidean, jitter 1), with their own
+/// baseline. A program of its own (the firmware's
 /// `count-impulse`), as [`OUTPUT_NAMES`].
-pub const IMPULSE_NAMES: [&str; 17] = [
+pub const IMPULSE_NAMES: [&str; 19] = [
     "baseline impulse",
     "sparse 2D I16F16",
     "sparse 2D f32",
@@ -64,6 +66,8 @@ pub const IMPULSE_NAMES: [&str; 17] = [
     "simplex 2D I16F16",
     "simplex 2D f32",
     "simplex 3D I16F16",
+    "cellular 2D I16F16",
+    "cellular 2D f32",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -190,5 +194,8 @@ pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
     acc ^= workload::<I16F16, 2>(begin, end, |q| bits(simplex.sample(q)));
     acc ^= workload::<f32, 2>(begin, end, |q| bits(simplex.sample(q)));
     acc ^= workload::<I16F16, 3>(begin, end, |q| bits(simplex.sample(q)));
+    let cellular = Cellular::new(1);
+    acc ^= workload::<I16F16, 2>(begin, end, |q| bits(cellular.sample(q)));
+    acc ^= workload::<f32, 2>(begin, end, |q| bits(cellular.sample(q)));
     acc
 }

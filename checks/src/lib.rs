@@ -12,6 +12,7 @@
 pub mod count;
 pub mod led;
 
+use bandnoise::cellular::{Metric, Output};
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
@@ -150,7 +151,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 12;
+const COMPOSED: usize = 14;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -180,6 +181,15 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
         .with_fixed_count(3)
         .and_then(|s| s.with_weights(Weights::Uniform))
         .unwrap_or(gabor_fixed);
+    let cellular = |output, metric, jitter| {
+        let plain = Spec::new(Base::Cellular, 6);
+        // Accepted for cellular noise, the jitter in range.
+        plain
+            .with_output(output)
+            .and_then(|s| s.with_metric(metric))
+            .and_then(|s| s.with_jitter(jitter))
+            .unwrap_or(plain)
+    };
     let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
@@ -229,6 +239,18 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             100,
         ),
         ("hybrid fixed-count gabor 3D", gabor_fixed, 3, 100),
+        (
+            "manhattan f2-f1 cellular 2D",
+            cellular(Output::F2MinusF1, Metric::Manhattan, 0.8),
+            2,
+            2000,
+        ),
+        (
+            "chebyshev value cellular 3D",
+            cellular(Output::CellValue, Metric::Chebyshev, 0.5),
+            3,
+            200,
+        ),
     ]
 }
 

@@ -1,5 +1,7 @@
 //! Every lattice noise of the runtime description (`bandnoise::spec::Base`, so a lattice noise
-//! added there is fuzzed unasked), and simplex noise, sampled through the description (bit for bit the typed
+//! added there is fuzzed unasked), simplex noise and cellular noise (its output, metric and
+//! jitter from the input; a cell value is not compared across number types, since rounding can
+//! change which point is nearest), sampled through the description (bit for bit the typed
 //! noise: tests/tests/spec.rs), 1D–4D, in f32 and I16F16, with arbitrary bit patterns as
 //! coordinates and seeds: no panic, never NaN or -0.0, within the documented bound; fixed point
 //! and f32 agree within 2⁻¹¹ (simplex noise 2⁻¹⁰: its scale and its kernel's fourth power
@@ -11,6 +13,7 @@
 
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
+use bandnoise::cellular::{Metric, Output};
 use bandnoise::lattice::{Perlin, TabledPerlin};
 use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, Spec, SpecNoise};
@@ -137,6 +140,16 @@ fn periodic(spec: &Spec, periods: [u32; 3], floats: [f32; 4], fixed: [I16F16; 4]
     }
 }
 
+/// Cellular noise for `seed` with the output, metric and jitter `bits` pick.
+fn cellular(seed: u32, bits: [u32; 3]) -> Spec {
+    let spec = Spec::new(Base::Cellular, seed);
+    let jitter = (bits[2] % 65_537) as f32 / 65_536.0;
+    spec.with_output(Output::ALL[bits[0] as usize % 4])
+        .and_then(|s| s.with_metric(Metric::ALL[bits[1] as usize % 4]))
+        .and_then(|s| s.with_jitter(jitter))
+        .expect("cellular settings in range")
+}
+
 /// Perlin with its per-seed table is Perlin, bit for bit, where the table's kernel runs (f32 2D
 /// and 3D; on x86-64 a different kernel from `Perlin`'s).
 fn tabled(seed: u32, floats: [f32; 4]) {
@@ -174,23 +187,31 @@ fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
 
 fuzz_target!(|input: Input| {
     let base = Base::ALL[usize::from(input.base) % Base::ALL.len()];
-    if !base.is_lattice() && base != Base::Simplex {
+    if !base.is_lattice() && !matches!(base, Base::Simplex | Base::Cellular) {
         return;
     }
     let floats = input.bits.map(f32::from_bits);
     let fixed = input.bits.map(|b| I16F16::from_bits(b as i32));
     // Fixed-point inputs that f32 holds exactly: |x| < 256 (24 significant bits).
     let exact = fixed.iter().all(|x| x.to_bits().unsigned_abs() < 256 << 16);
-    let spec = Spec::new(base, input.seed);
+    let spec = if base == Base::Cellular {
+        cellular(input.seed, input.periods)
+    } else {
+        Spec::new(base, input.seed)
+    };
     let tolerance = match (exact, base) {
         (false, _) => 0.0,
         (true, Base::Simplex) => 1.0 / 1024.0,
+        // A cell value jumps where fixed point's rounding makes another point the nearest.
+        (true, Base::Cellular) if spec.output() == Output::CellValue => 0.0,
         (true, _) => 1.0 / 2048.0,
     };
     check(&spec, floats, fixed, tolerance);
     if base == Base::Simplex {
         assert!(spec.with_period(&input.periods).is_err());
         curl(input.seed, floats, fixed);
+    } else if base == Base::Cellular {
+        assert!(spec.with_period(&input.periods).is_err());
     } else {
         periodic(&spec, input.periods, floats, fixed);
     }

@@ -174,7 +174,11 @@ fn run(o: &Options) -> Result<(), String> {
     }
     for base in Base::ALL.into_iter().filter(|b| b.has_dimension(2)) {
         let noise = build(&Spec::new(base, o.seed))?;
-        if base.is_impulse() || base == Base::Wiener {
+        if base == Base::Cellular {
+            // Distances from 0: black at the feature points.
+            render_from_zero::<f32>(o, &format!("{base}-2d"), &noise, 1.0)?;
+            render_from_zero::<I16F16>(o, &format!("{base}-2d-fixed"), &noise, 1.0)?;
+        } else if base.is_impulse() || base == Base::Wiener {
             // Variance 1 and a bound far above what occurs: show ±3σ.
             render_scaled::<f32, _>(o, &format!("{base}-2d"), &noise, 3.0)?;
             render_scaled::<I16F16, _>(o, &format!("{base}-2d-fixed"), &noise, 3.0)?;
@@ -192,7 +196,45 @@ fn run(o: &Options) -> Result<(), String> {
     render_wiener_covariances(o)?;
     render_gabor_variants(o)?;
     render_curl(o)?;
+    render_cellular_variants(o)?;
     render_wavelet_filtering(o)
+}
+
+/// Samples `noise` over the grid mapping `[0, top]` to black..white (cellular distances).
+fn render_from_zero<R: Real>(
+    o: &Options,
+    name: &str,
+    noise: &SpecNoise<2>,
+    top: f32,
+) -> Result<(), String> {
+    render_with(o, name, top, 1.0, |p, _| {
+        2.0 * Noise::<R, 2>::sample(noise, p.map(R::from_f32)).to_f32() - top
+    })
+}
+
+/// Cellular noise (Worley 1996) beyond its default (`cellular-2d`: F1, Euclidean): the cell
+/// borders (F2 − F1), F2, the cells' values (a Voronoi diagram), the Manhattan and Chebyshev
+/// metrics, and a jitter of 0.5 (an even tiling).
+fn render_cellular_variants(o: &Options) -> Result<(), String> {
+    let variants = [
+        ("cellular-f2-f1-2d", "output=f2-f1", 0.8),
+        ("cellular-f2-2d", "output=f2", 1.3),
+        ("cellular-value-2d", "output=value", 0.0),
+        ("cellular-manhattan-2d", "metric=manhattan", 1.4),
+        ("cellular-chebyshev-2d", "metric=chebyshev", 0.9),
+        ("cellular-jitter-0.5-2d", "jitter=0.5", 0.9),
+    ];
+    for (name, settings, top) in variants {
+        let text = format!("cellular seed={} {settings}", o.seed);
+        let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+        let noise = build(&spec)?;
+        if top == 0.0 {
+            render::<f32, _>(o, name, &noise)?;
+        } else {
+            render_from_zero::<f32>(o, name, &noise, top)?;
+        }
+    }
+    Ok(())
 }
 
 /// Curl noise (Bridson et al. 2007) over simplex noise: the field's two components (its

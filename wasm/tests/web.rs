@@ -120,7 +120,7 @@ fn every_noise_renders_and_draws() {
     let mut demo = Demo::new(64).unwrap();
     let ctx = canvas();
     let kinds = bandnoise_wasm::kinds();
-    assert_eq!(kinds.len(), 12, "{kinds:?}");
+    assert_eq!(kinds.len(), 13, "{kinds:?}");
     for kind in &kinds {
         for number in ["f32", "fixed"] {
             demo.render(&params(kind, number).unwrap());

@@ -12,6 +12,7 @@ use core::hint::black_box;
 use core::panic::PanicInfo;
 
 use bandnoise::batch::Grid;
+use bandnoise::cellular::{Cellular, Metric, Output};
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution};
@@ -55,6 +56,14 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     all_dims!(MNoise::<61>::new(black_box(1)));
     all_dims!(Simplex::new(black_box(1)));
     add(Simplex::new(2).sample_with_gradient(p).1[3]);
+    // Every output and metric (the optimiser cannot tell which), and any jitter.
+    let cellular = Cellular::new(black_box(1))
+        .with_output(black_box(Output::F2MinusF1))
+        .with_metric(black_box(Metric::Chebyshev));
+    if let Ok(c) = cellular.with_jitter(black_box(0.5)) {
+        all_dims!(c);
+        add(c.sample_with_gradient([p[0], p[1], p[2]]).1[2]);
+    }
     add(Curl2::new(Simplex::new(black_box(2))).sample_vector([p[0], p[1]])[1]);
     let flow = Curl3::new(Perlin::new(black_box(1)), Simplex::new(2), CNoise::new(3));
     add(flow.sample_vector([p[0], p[1], p[2]])[2]);
