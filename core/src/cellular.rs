@@ -165,6 +165,22 @@ struct Nearest<R, const D: usize> {
 }
 
 impl<R: Real, const D: usize> Nearest<R, D> {
+    /// Keeps the point at key `d` and offset `q` (of the cell whose hash is `key`) if it is
+    /// nearer than the second-nearest so far.
+    #[inline]
+    fn offer(&mut self, d: R, q: [R; D], key: u32) {
+        if d < self.keys[0] {
+            self.keys[1] = self.keys[0];
+            self.offsets[1] = self.offsets[0];
+            self.keys[0] = d;
+            self.offsets[0] = q;
+            self.hash = key;
+        } else if d < self.keys[1] {
+            self.keys[1] = d;
+            self.offsets[1] = q;
+        }
+    }
+
     /// `F1` (`i = 0`) or `F2` (`i = 1`) in `metric`. The Euclidean distance is the length of
     /// the offset ([`norm`](crate::real::sealed::Sealed::norm)): in fixed point the square
     /// root of the rounded key would lose short distances (`√(2⁻¹⁶)` is 2⁻⁸).
@@ -226,7 +242,7 @@ const MAX_RING: i32 = 5;
 /// The 3ᴰ offsets of rings 0 and 1 in `D` dimensions (first `NEAR_CELLS[D]` entries): the
 /// point's own cell, then the cells sharing a face with it, then an edge, and so on, so the
 /// nearest boxes come first and the `F` they find prunes the farther ones (Worley's order).
-const NEAR_ORDER: [[[i8; 4]; 81]; 5] = [
+const NEAR_ORDER: [[[i32; 4]; 81]; 5] = [
     near_order(0),
     near_order(1),
     near_order(2),
@@ -237,17 +253,17 @@ const NEAR_ORDER: [[[i8; 4]; 81]; 5] = [
 /// `3ᴰ`.
 const NEAR_CELLS: [usize; 5] = [1, 3, 9, 27, 81];
 
-const fn near_order(dims: usize) -> [[i8; 4]; 81] {
-    let mut out = [[0i8; 4]; 81];
+const fn near_order(dims: usize) -> [[i32; 4]; 81] {
+    let mut out = [[0i32; 4]; 81];
     let mut n = 0;
     // By the number of non-zero offsets, then in odometer order.
     let mut nonzero = 0;
     while nonzero <= dims {
         let mut i = 0;
         while i < NEAR_CELLS[dims] {
-            let (mut k, mut rest, mut count, mut a) = ([0i8; 4], i, 0, 0);
+            let (mut k, mut rest, mut count, mut a) = ([0i32; 4], i, 0, 0);
             while a < dims {
-                k[a] = (rest % 3) as i8 - 1;
+                k[a] = (rest % 3) as i32 - 1;
                 if k[a] != 0 {
                     count += 1;
                 }
@@ -373,20 +389,33 @@ impl Cellular {
             // shift is in range to the compiler: it is below 32 for D ≤ 4).
             let u = ((bits >> ((32 - width * (a as u32 + 1)) & 31)) & ((1 << width) - 1))
                 << (16 - width);
-            // ½ + jitter·(u − ½), floored: |(u − ½)·jitter| ≤ 2³¹ in i64.
-            *o = UNIT / 2 + (((u as i64 - (UNIT / 2) as i64) * self.jitter as i64) >> 16) as i32;
+            *o = self.offset(u as i32);
         }
         out
     }
 
-    /// The lowest and highest offset a feature point can have across its cell (16.16).
+    /// The offset `½ + jitter·(u − ½)` across a cell of a point drawn at `u` (16.16, `u` in
+    /// `0..UNIT`), floored.
+    #[inline]
+    fn offset(&self, u: i32) -> i32 {
+        // In i32: −2¹⁵ ≤ u − ½ < 2¹⁵ and 0 ≤ jitter ≤ 2¹⁶, so the product is in [−2³¹, 2³¹).
+        UNIT / 2 + (((u - UNIT / 2) * self.jitter) >> 16)
+    }
+
+    /// The lowest and highest offset a feature point can have across its cell (16.16): those
+    /// of `u = 0` and `u = 1 − 2⁻¹⁶` in [`offset`](Self::offset), `½ − ⌈jitter/2⌉` and
+    /// `½ + ⌊(½ − 2⁻¹⁶)·jitter⌋`.
+    ///
+    /// In `i32` on purpose: written as `i64` products by constants, LLVM's constant hoisting
+    /// miscompiled them for RV32IMC (rustc 1.95, opt-level 1 and above: the lowest offset
+    /// came out as ½, so neighbours were pruned wrongly). The firmware checksums found it;
+    /// `-C llvm-args=-opt-bisect-limit` narrowed it to `consthoist` on the search.
     #[inline]
     fn extent(&self) -> (i32, i32) {
-        let half = (UNIT / 2) as i64;
-        let j = self.jitter as i64;
+        let j = self.jitter;
         (
-            UNIT / 2 + ((-half * j) >> 16) as i32,
-            UNIT / 2 + (((half - 1) * j) >> 16) as i32,
+            UNIT / 2 - ((j + 1) >> 1),
+            UNIT / 2 + (((UNIT / 2 - 1) * j) >> 16),
         )
     }
 
@@ -452,14 +481,7 @@ impl Cellular {
                 q[a] = R::from_ratio(k[a] * UNIT + offsets[a], 16) - frac[a];
                 d = K::combine(d, K::axis_key(q[a].abs()));
             }
-            if d < best.keys[0] {
-                best.keys = [d, best.keys[0]];
-                best.offsets = [q, best.offsets[0]];
-                best.hash = key;
-            } else if d < best.keys[1] {
-                best.keys[1] = d;
-                best.offsets[1] = q;
-            }
+            best.offer(d, q, key);
         };
         // How far the box of cell k's possible points lies from the point along axis a.
         let gap = |a: usize, k: i32| -> R {
@@ -482,10 +504,11 @@ impl Cellular {
         // it is hashed. Axis a's box keys for offsets −1, 0, 1:
         let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
         for k in &NEAR_ORDER[D][..NEAR_CELLS[D]] {
-            let k: [i32; D] = core::array::from_fn(|a| k[a] as i32);
+            let k: [i32; D] = core::array::from_fn(|a| k[a]);
             let mut box_key = R::ZERO;
             for a in 0..D {
-                box_key = K::combine(box_key, near_gaps[a][(k[a] + 1) as usize]);
+                // `min` says the index is in the table to the compiler (no bounds check).
+                box_key = K::combine(box_key, near_gaps[a][((k[a] + 1) as usize).min(2)]);
             }
             if box_key >= reach(&best) {
                 continue;
@@ -657,3 +680,31 @@ macro_rules! cellular_impls {
 
 cellular_impls!(1, 2, 3, 4);
 crate::noise::inherent_amplitude_bound!(Cellular, []);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `extent` is the lowest and highest `offset`, which grows with `u`, for every jitter.
+    #[test]
+    fn extent_bounds_the_offsets() {
+        for jitter in (0..=UNIT)
+            .step_by(97)
+            .chain([1, 2, 3, 32_767, 32_768, UNIT - 1, UNIT])
+        {
+            let noise = Cellular {
+                jitter,
+                ..Cellular::new(0)
+            };
+            for u in 1..UNIT {
+                assert!(
+                    noise.offset(u - 1) <= noise.offset(u),
+                    "jitter {jitter}, u {u}"
+                );
+            }
+            let (first, last) = (noise.offset(0), noise.offset(UNIT - 1));
+            assert_eq!(noise.extent(), (first, last), "jitter {jitter}");
+            assert!(first >= 0 && last < UNIT);
+        }
+    }
+}
