@@ -22,7 +22,7 @@
 //! search, as most peers do, can miss `F2` (and, with the peers' looser placements, `F1`):
 //! with `jitter = 1` the second-nearest point can lie two cells away. How far the search can
 //! go is bounded: `F2` is never beyond the own cell's point and the near face neighbour's
-//! (the bound [`Noise::amplitude_bound`] reports), which is at most 4.5 cells in the worst
+//! (the bound [`Noise::amplitude_bound`](crate::Noise::amplitude_bound) reports), which is at most 4.5 cells in the worst
 //! case (Manhattan, 4D, `jitter = 1`), so at most 5 rings are searched. `tests/tests/cellular.rs`
 //! compares `F1`, `F2` and the cell value with a brute-force search over the 13ᴰ cells around
 //! the point at 10⁵ random points per metric, jitter and dimension.
@@ -263,7 +263,7 @@ const fn near_order(dims: usize) -> [[i32; 4]; 81] {
 ///   neighbour's on the near side of axis 0: along axis 0 at most `1.5 − h`, along every other
 ///   axis `1 − h`, `h = (1 − jitter)/2` the margin between a cell's points and its borders. For
 ///   jitter 1 in 2D: `√3.25 ≈ 1.80` Euclidean, `3.25` squared, `2.5` Manhattan, `1.5`
-///   Chebyshev. [`Noise::amplitude_bound`] reports it (plus 2⁻¹⁰ for rounding).
+///   Chebyshev. [`Noise::amplitude_bound`](crate::Noise::amplitude_bound) reports it (plus 2⁻¹⁰ for rounding).
 /// * **Statistics** (jitter 1, Euclidean, measured over 10⁶ points in
 ///   `tests/tests/cellular.rs`): mean `F1` 0.43 in 2D, 0.52 in 3D.
 ///
