@@ -16,6 +16,8 @@
 //!   and any of them periodic ([`Periodic`](lattice::Periodic)).
 //! * [`simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D, continuous, with its
 //!   analytic gradient.
+//! * [`cellular`]: Worley's cellular noise, 1D–4D: `F1`, `F2`, `F2 − F1` or the cell's value
+//!   in four metrics, exact (a pruned search, equal to brute force), with analytic gradients.
 //! * [`vector`]: curl noise (Bridson et al. 2007) from any noise's analytic gradient.
 //! * [`fractal`]: fBm, turbulence and ridged sums over any noise, with pbrt's anti-aliasing.
 //! * [`impulse`]: Lewis's sparse convolution noise and Lagae et al.'s Gabor noise: random
@@ -64,6 +66,7 @@
 //! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
 //! | [`CellHash`](hash::CellHash) | is mixed into the start of every cell's hash chain | as any other seed |
 //! | [`SparseConvolution`](impulse::SparseConvolution), [`Gabor`](impulse::Gabor) | is its [`CellHash`](hash::CellHash)'s seed: every cell's impulses change | as any other seed |
+//! | [`Cellular`](cellular::Cellular) | is its [`CellHash`](hash::CellHash)'s seed: every cell's feature point and value change | as any other seed |
 //!
 //! Different seeds give decorrelated noise (tested: |correlation| < 0.05 on a 256² grid).
 //!
