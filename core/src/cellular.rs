@@ -216,7 +216,7 @@ const MAX_RING: i32 = 5;
 /// The 3ᴰ offsets of rings 0 and 1 in `D` dimensions (first `NEAR_CELLS[D]` entries): the
 /// point's own cell, then the cells sharing a face with it, then an edge, and so on, so the
 /// nearest boxes come first and the `F` they find prunes the farther ones (Worley's order).
-const NEAR_ORDER: [[[i32; 4]; 81]; 5] = [
+const NEAR_ORDER: [[[i8; 4]; 81]; 5] = [
     near_order(0),
     near_order(1),
     near_order(2),
@@ -227,17 +227,17 @@ const NEAR_ORDER: [[[i32; 4]; 81]; 5] = [
 /// `3ᴰ`.
 const NEAR_CELLS: [usize; 5] = [1, 3, 9, 27, 81];
 
-const fn near_order(dims: usize) -> [[i32; 4]; 81] {
-    let mut out = [[0i32; 4]; 81];
+const fn near_order(dims: usize) -> [[i8; 4]; 81] {
+    let mut out = [[0i8; 4]; 81];
     let mut n = 0;
     // By the number of non-zero offsets, then in odometer order.
     let mut nonzero = 0;
     while nonzero <= dims {
         let mut i = 0;
         while i < NEAR_CELLS[dims] {
-            let (mut k, mut rest, mut count, mut a) = ([0i32; 4], i, 0, 0);
+            let (mut k, mut rest, mut count, mut a) = ([0i8; 4], i, 0, 0);
             while a < dims {
-                k[a] = (rest % 3) as i32 - 1;
+                k[a] = (rest % 3) as i8 - 1;
                 if k[a] != 0 {
                     count += 1;
                 }
@@ -495,7 +495,7 @@ impl Cellular {
         // it is hashed. Axis a's box keys for offsets −1, 0, 1:
         let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
         for k in &NEAR_ORDER[D][..NEAR_CELLS[D]] {
-            let k: [i32; D] = core::array::from_fn(|a| k[a]);
+            let k: [i32; D] = core::array::from_fn(|a| i32::from(k[a]));
             let mut box_key = R::ZERO;
             for a in 0..D {
                 // `min` says the index is in the table to the compiler (no bounds check).
@@ -580,20 +580,23 @@ impl Cellular {
     #[inline]
     fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(&self, p: [R; D]) -> (R, [R; D]) {
         let nearest = self.search::<R, D>(p);
-        let f = |i: usize| nearest.distance(self.metric, i);
-        let g = |i: usize| {
-            if GRADIENT {
-                nearest.gradient(self.metric, i, f(i))
+        // The distance to the nearest (`i = 0`) or second-nearest point and, where
+        // `GRADIENT`, its gradient (which needs the distance: computed once).
+        let fg = |i: usize| {
+            let f = nearest.distance(self.metric, i);
+            let g = if GRADIENT {
+                nearest.gradient(self.metric, i, f)
             } else {
                 [R::ZERO; D]
-            }
+            };
+            (f, g)
         };
         let (value, gradient) = match self.output {
-            Output::F1 => (f(0), g(0)),
-            Output::F2 => (f(1), g(1)),
+            Output::F1 => fg(0),
+            Output::F2 => fg(1),
             Output::F2MinusF1 => {
-                let (g1, g0) = (g(1), g(0));
-                (f(1) - f(0), core::array::from_fn(|a| g1[a] - g0[a]))
+                let ((f1, g1), (f0, g0)) = (fg(1), fg(0));
+                (f1 - f0, core::array::from_fn(|a| g1[a] - g0[a]))
             }
             Output::CellValue => (Self::value_of_key(nearest.hash), [R::ZERO; D]),
         };

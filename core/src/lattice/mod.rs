@@ -7,6 +7,8 @@
 //! | [`TabledPerlin`] | as [`Perlin`], plus a per-seed table for the point kernel | | | |
 //! | [`OriginalPerlin`] | Perlin 1985 | permutation, x innermost | a table of 256 random unit vectors | cubic |
 //! | [`ValueNoise`] | pbrt §10.6 intro; Lewis 1989 §2 | permutation, x innermost | none: a value in `[-1, 1]` per point | quintic |
+//! | [`WhiteNoise`] | Lewis 1989 §2.2 | [`CellHash`](crate::hash::CellHash) into a prime-length table of a [`Distribution`] | none: constant per cell | none |
+//! | [`CubicValueNoise`] | Lewis 1989 §2.3 | as [`WhiteNoise`], 4ᴰ points | none: [`WhiteNoise`]'s values | Catmull-Rom |
 //! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
 //! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
 //!
@@ -31,17 +33,21 @@
 //! [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
 
 mod corner;
+mod cubic;
 pub(crate) mod kernel;
 mod original;
 mod periodic;
 pub(crate) mod perlin;
 mod value;
+mod white;
 
 pub use corner::{CNoise, MNoise};
+pub use cubic::CubicValueNoise;
 pub use original::OriginalPerlin;
 pub use periodic::Periodic;
 pub use perlin::{Perlin, TabledPerlin};
 pub use value::ValueNoise;
+pub use white::{Distribution, VALUES, WhiteNoise};
 
 use crate::batch::{self, Grid, LANES};
 use crate::{Error, Real};

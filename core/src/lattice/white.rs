@@ -1,0 +1,321 @@
+//! Lattice white noise (Lewis 1989 §2.2, Fig. 1): an uncorrelated random value per integer
+//! cell, constant across the cell.
+//!
+//! Lewis hashes a point's cell into an index of a table of random values "with the desired
+//! probability density" whose length is prime (`Rantab[i % RANTABLEN]`). bandnoise's index is
+//! the seed's [`CellHash`] of the cell (the hash every cell-based noise shares; Lewis's
+//! per-axis indirection tables are its role), and its tables hold [`VALUES`] (a prime)
+//! stratified quantiles of each [`Distribution`]: value `k` is the quantile at `(k + ½)/N`, so
+//! the table's values follow the distribution as closely as `N` values can, in 1/4096 steps
+//! (exact in every number type, so `f32`, `f64` and I16F16 give the same values). The order
+//! of the table does not matter: the hash picks an entry at random.
+//!
+//! It is the input that interpolation and filtering turn into smooth noise (Lewis §2.3):
+//! [`CubicValueNoise`](super::CubicValueNoise) interpolates these values.
+
+use crate::Real;
+use crate::hash::CellHash;
+use crate::lattice::kernel::split_point;
+
+/// The length of each table of values: a prime, as Lewis's `RANTABLEN`.
+pub const VALUES: usize = 1021;
+
+/// The table's values are in units of 2⁻¹² (exact in `f32`, `f64` and I16F16).
+const SHIFT: u32 = 12;
+
+/// The distribution of the lattice values.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Distribution {
+    /// Uniform in `[-1, 1]`: the table's values are `(2k + 1)/N − 1` (mean 0, variance
+    /// `(1 − 1/N²)/3 ≈ ⅓`, largest magnitude `1 − 1/N`).
+    #[default]
+    Uniform,
+    /// The standard normal `N(0, 1)`: the table's values are its quantiles at `(k + ½)/N`
+    /// (mean 0; variance 0.9987 and largest magnitude 3.2964, both of the table itself, as
+    /// `N` stratified values have a slightly shorter tail than the distribution).
+    Gaussian,
+}
+
+impl Distribution {
+    /// Both, in the order of their [`name`](Self::name)s in the text form.
+    pub const ALL: [Distribution; 2] = [Distribution::Uniform, Distribution::Gaussian];
+
+    /// The name in the runtime description's text form: `uniform`, `gaussian`.
+    #[must_use]
+    pub const fn name(self) -> &'static str {
+        match self {
+            Distribution::Uniform => "uniform",
+            Distribution::Gaussian => "gaussian",
+        }
+    }
+
+    /// The table of this distribution's [`VALUES`] values, in units of 2⁻¹², ascending.
+    #[must_use]
+    pub const fn table(self) -> &'static [i16; VALUES] {
+        match self {
+            Distribution::Uniform => &UNIFORM,
+            Distribution::Gaussian => &GAUSSIAN,
+        }
+    }
+
+    /// The largest magnitude in the table (the noise's bound).
+    #[must_use]
+    pub const fn largest(self) -> f32 {
+        let t = self.table();
+        let top = if -t[0] > t[VALUES - 1] {
+            -t[0]
+        } else {
+            t[VALUES - 1]
+        };
+        top as f32 / (1 << SHIFT) as f32
+    }
+}
+
+static UNIFORM: [i16; VALUES] = uniform_table();
+static GAUSSIAN: [i16; VALUES] = gaussian_table();
+
+/// `round(v · 2¹²)`, halves away from zero (so the tables are symmetric).
+const fn quantise(v: f64) -> i16 {
+    let scaled = v * (1 << SHIFT) as f64;
+    let r = if scaled < 0.0 {
+        -((-scaled + 0.5) as i64)
+    } else {
+        (scaled + 0.5) as i64
+    };
+    r as i16
+}
+
+const fn uniform_table() -> [i16; VALUES] {
+    let mut t = [0i16; VALUES];
+    let mut k = 0;
+    while k < VALUES {
+        t[k] = quantise((2 * k + 1) as f64 / VALUES as f64 - 1.0);
+        k += 1;
+    }
+    t
+}
+
+const fn gaussian_table() -> [i16; VALUES] {
+    let mut t = [0i16; VALUES];
+    let mut k = 0;
+    while k < VALUES {
+        t[k] = quantise(normal_quantile((k as f64 + 0.5) / VALUES as f64));
+        k += 1;
+    }
+    t
+}
+
+/// `Φ⁻¹(p)` for `p` in `(0, 1)`: Acklam's rational approximation (relative error below
+/// 1.2·10⁻⁹, far below the tables' 2⁻¹³ rounding; the tables are checked against `erfc` in
+/// `tests/tests/white.rs`). `const`, so the tables are built at compile time, identically on
+/// every target.
+const fn normal_quantile(p: f64) -> f64 {
+    const A: [f64; 6] = [
+        -3.969_683_028_665_376e1,
+        2.209_460_984_245_205e2,
+        -2.759_285_104_469_687e2,
+        1.383_577_518_672_69e2,
+        -3.066_479_806_614_716e1,
+        2.506_628_277_459_239,
+    ];
+    const B: [f64; 5] = [
+        -5.447_609_879_822_406e1,
+        1.615_858_368_580_409e2,
+        -1.556_989_798_598_866e2,
+        6.680_131_188_771_972e1,
+        -1.328_068_155_288_572e1,
+    ];
+    const C: [f64; 6] = [
+        -7.784_894_002_430_293e-3,
+        -3.223_964_580_411_365e-1,
+        -2.400_758_277_161_838,
+        -2.549_732_539_343_734,
+        4.374_664_141_464_968,
+        2.938_163_982_698_783,
+    ];
+    const D: [f64; 4] = [
+        7.784_695_709_041_462e-3,
+        3.224_671_290_700_398e-1,
+        2.445_134_137_142_996,
+        3.754_408_661_907_416,
+    ];
+    const LOW: f64 = 0.02425;
+    // The tails: a rational function of q = √(−2 ln p), odd about ½.
+    const fn tail(p: f64) -> f64 {
+        let q = sqrt(-2.0 * ln(p));
+        (((((C[0] * q + C[1]) * q + C[2]) * q + C[3]) * q + C[4]) * q + C[5])
+            / ((((D[0] * q + D[1]) * q + D[2]) * q + D[3]) * q + 1.0)
+    }
+    if p < LOW {
+        tail(p)
+    } else if p > 1.0 - LOW {
+        -tail(1.0 - p)
+    } else {
+        let q = p - 0.5;
+        let r = q * q;
+        (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
+            / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
+    }
+}
+
+/// `ln x` for a normal positive `x`: `x = m·2ᵉ` with `m` in `[1, 2)`, `ln m = 2 atanh s` with
+/// `s = (m − 1)/(m + 1) ≤ ⅓`, whose series' 25 terms reach `f64` precision.
+const fn ln(x: f64) -> f64 {
+    let bits = x.to_bits();
+    let e = ((bits >> 52) & 0x7FF) as i64 - 1023;
+    let m = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
+    let s = (m - 1.0) / (m + 1.0);
+    let s2 = s * s;
+    let (mut term, mut sum, mut k) = (s, 0.0, 0);
+    while k < 25 {
+        sum += term / (2 * k + 1) as f64;
+        term *= s2;
+        k += 1;
+    }
+    e as f64 * core::f64::consts::LN_2 + 2.0 * sum
+}
+
+/// `√x` for `x > 0` by Newton's iteration from a power of two near it.
+const fn sqrt(x: f64) -> f64 {
+    let e = ((x.to_bits() >> 52) & 0x7FF) as i64 - 1023;
+    let mut y = f64::from_bits(((e / 2 + 1023) as u64) << 52);
+    let mut i = 0;
+    while i < 64 {
+        y = 0.5 * (y + x / y);
+        i += 1;
+    }
+    y
+}
+
+/// Lattice white noise (Lewis 1989 §2.2) in 1 to 4 dimensions: see the [module docs](self).
+///
+/// * **Value**: `table[h mod N]` for the cell's hash `h` (`CellHash` of `floor(p)`), constant
+///   on each cell `[i, i + 1)ᴰ`, so discontinuous at cell borders (no gradient).
+/// * **Range**: the table's largest magnitude ([`Distribution`]): `1 − 1/N` for
+///   [`Uniform`](Distribution::Uniform), 3.2964 for [`Gaussian`](Distribution::Gaussian).
+/// * **Period**: 2³² cells per axis (the hash uses each cell's whole coordinate).
+///
+/// # Examples
+///
+/// ```
+/// use bandnoise::{Noise, lattice::{Distribution, WhiteNoise}};
+///
+/// let white = WhiteNoise::new(7);
+/// // One value per cell.
+/// assert_eq!(white.sample([2.25f32, -4.5]), white.sample([2.75, -4.25]));
+/// assert!(white.sample([2.25f32, -4.5]).abs() <= 1.0);
+/// // Gaussian values: most within ±3, and the bound is the table's largest.
+/// let g = white.with_distribution(Distribution::Gaussian);
+/// assert!(g.sample([0.5f64, 0.5]).abs() <= g.amplitude_bound::<2>() as f64);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct WhiteNoise {
+    hash: CellHash,
+    distribution: Distribution,
+}
+
+impl WhiteNoise {
+    /// Lattice white noise for `seed`, uniform in `[-1, 1]`.
+    #[must_use]
+    pub const fn new(seed: u32) -> Self {
+        Self {
+            hash: CellHash::new(seed),
+            distribution: Distribution::Uniform,
+        }
+    }
+
+    /// The same noise with values of `distribution`.
+    #[must_use]
+    pub const fn with_distribution(self, distribution: Distribution) -> Self {
+        Self {
+            distribution,
+            ..self
+        }
+    }
+
+    /// The distribution of the values.
+    #[must_use]
+    pub const fn distribution(&self) -> Distribution {
+        self.distribution
+    }
+
+    /// The value of integer cell `cell`: the noise anywhere in `[cell, cell + 1)ᴰ`.
+    #[must_use]
+    pub fn cell_value<R: Real, const D: usize>(&self, cell: [i32; D]) -> R {
+        self.value_of_hash(self.hash.hash(cell))
+    }
+
+    /// The chain hash the cell values come from (shared with the cubic interpolant).
+    pub(crate) fn hash(&self) -> &CellHash {
+        &self.hash
+    }
+
+    /// The value for a cell whose hash is `h`.
+    #[inline]
+    pub(crate) fn value_of_hash<R: Real>(&self, h: u32) -> R {
+        let table = self.distribution.table();
+        // `% VALUES` is below `VALUES`: no bounds check.
+        R::from_ratio(i32::from(table[h as usize % VALUES]), SHIFT)
+    }
+}
+
+impl Default for WhiteNoise {
+    fn default() -> Self {
+        Self::new(0)
+    }
+}
+
+macro_rules! white_impls {
+    ($($d:literal),*) => {$(
+        impl<R: Real> crate::Noise<R, $d> for WhiteNoise {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                let (cell, _) = split_point(p);
+                self.cell_value(cell)
+            }
+            fn amplitude_bound(&self) -> f32 {
+                self.distribution.largest()
+            }
+        }
+    )*};
+}
+
+white_impls!(1, 2, 3, 4);
+crate::noise::inherent_amplitude_bound!(WhiteNoise, []);
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tables_are_ascending_and_symmetric() {
+        for d in Distribution::ALL {
+            let t = d.table();
+            for k in 0..VALUES {
+                assert_eq!(t[k], -t[VALUES - 1 - k], "{d:?} {k}");
+                if k > 0 {
+                    assert!(t[k - 1] <= t[k], "{d:?} {k}");
+                }
+            }
+        }
+        assert_eq!(UNIFORM[VALUES / 2], 0);
+        assert_eq!(GAUSSIAN[VALUES / 2], 0);
+    }
+
+    #[test]
+    fn const_math_is_accurate() {
+        for x in [1e-300, 1e-9, 0.02, 0.5, 1.0, 3.0, 1e10] {
+            assert!((ln(x) - libm::log(x)).abs() <= 1e-13 * libm::log(x).abs().max(1.0));
+            assert!((sqrt(x) - libm::sqrt(x)).abs() <= 1e-15 * libm::sqrt(x));
+        }
+    }
+
+    #[test]
+    fn length_is_prime() {
+        assert!(
+            (2..VALUES)
+                .take_while(|d| d * d <= VALUES)
+                .all(|d| !VALUES.is_multiple_of(d))
+        );
+    }
+}
