@@ -11,10 +11,11 @@
 //! (16 in 2D, 64 in 3D, 256 in 4D), each an integer mix, against the 2ᴰ of linear-fade value
 //! noise ([`ValueNoise`](super::ValueNoise)).
 
-use super::white::{Distribution, WhiteNoise};
+use super::white::WhiteNoise;
 use crate::Real;
 use crate::hash::chain::ChainHash;
 use crate::lattice::kernel::split_point;
+use crate::wavelet::Distribution;
 
 /// Value noise with Catmull-Rom interpolation in 1 to 4 dimensions: see the
 /// [module docs](self).
@@ -23,7 +24,7 @@ use crate::lattice::kernel::split_point;
 ///   integer point `n`, `CubicValueNoise::sample(n)` is exactly `WhiteNoise::sample(n)`, in
 ///   every number type.
 /// * **Range**: `|n| ≤ 1.25ᴰ · m` with `m` the distribution's largest value
-///   ([`Distribution::largest`]): per axis the weights' magnitudes sum to `1 + t(1 − t) ≤ 1.25`.
+///   ([`WhiteNoise::largest`]): per axis the weights' magnitudes sum to `1 + t(1 − t) ≤ 1.25`.
 ///   The largest seen (uniform values, `tests/tests/white.rs`, 10⁵ random points in 1D and
 ///   2D, 2·10⁴ in 3D, 2·10³ in 4D): 1.19, 1.24, 1.19, 1.14: past the lattice values' `1 − 1/N`
 ///   (Catmull-Rom overshoots), well within the bound.
@@ -163,7 +164,7 @@ macro_rules! cubic_impls {
             }
             fn amplitude_bound(&self) -> f32 {
                 // 1.25ᴰ · the largest lattice value, plus rounding.
-                let mut bound = self.white.distribution().largest();
+                let mut bound = self.white.largest();
                 for _ in 0..$d {
                     bound *= 1.25;
                 }

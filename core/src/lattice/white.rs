@@ -5,7 +5,7 @@
 //! probability density" whose length is prime (`Rantab[i % RANTABLEN]`). bandnoise's index is
 //! the seed's [`CellHash`] of the cell (the hash every cell-based noise shares; Lewis's
 //! per-axis indirection tables are its role), and its tables hold [`VALUES`] (a prime)
-//! stratified quantiles of each [`Distribution`]: value `k` is the quantile at `(k + ½)/N`, so
+//! stratified quantiles of a [`Distribution`] ([`table`]): value `k` is the quantile at `(k + ½)/N`, so
 //! the table's values follow the distribution as closely as `N` values can, in 1/4096 steps
 //! (exact in every number type, so `f32`, `f64` and I16F16 give the same values). The order
 //! of the table does not matter: the hash picks an entry at random.
@@ -16,6 +16,7 @@
 use crate::Real;
 use crate::hash::CellHash;
 use crate::lattice::kernel::split_point;
+use crate::wavelet::Distribution;
 
 /// The length of each table of values: a prime, as Lewis's `RANTABLEN`.
 pub const VALUES: usize = 1021;
@@ -23,52 +24,30 @@ pub const VALUES: usize = 1021;
 /// The table's values are in units of 2⁻¹² (exact in `f32`, `f64` and I16F16).
 const SHIFT: u32 = 12;
 
-/// The distribution of the lattice values.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub enum Distribution {
-    /// Uniform in `[-1, 1]`: the table's values are `(2k + 1)/N − 1` (mean 0, variance
-    /// `(1 − 1/N²)/3 ≈ ⅓`, largest magnitude `1 − 1/N`).
-    #[default]
-    Uniform,
-    /// The standard normal `N(0, 1)`: the table's values are its quantiles at `(k + ½)/N`
-    /// (mean 0; variance 0.9987 and largest magnitude 3.2964, both of the table itself, as
-    /// `N` stratified values have a slightly shorter tail than the distribution).
-    Gaussian,
+/// The table of `distribution`'s [`VALUES`] values, in units of 2⁻¹², ascending.
+///
+/// * [`Uniform`](Distribution::Uniform): `(2k + 1)/N − 1`, uniform in `[-1, 1]` (mean 0,
+///   variance `(1 − 1/N²)/3 ≈ ⅓`, largest magnitude `1 − 1/N`).
+/// * [`Gaussian`](Distribution::Gaussian): the standard normal's quantiles at `(k + ½)/N`
+///   (mean 0; variance 0.9987 and largest magnitude 3.2964, both of the table itself, as `N`
+///   stratified values have a slightly shorter tail than the distribution).
+#[must_use]
+pub const fn table(distribution: Distribution) -> &'static [i16; VALUES] {
+    match distribution {
+        Distribution::Uniform => &UNIFORM,
+        Distribution::Gaussian => &GAUSSIAN,
+    }
 }
 
-impl Distribution {
-    /// Both, in the order of their [`name`](Self::name)s in the text form.
-    pub const ALL: [Distribution; 2] = [Distribution::Uniform, Distribution::Gaussian];
-
-    /// The name in the runtime description's text form: `uniform`, `gaussian`.
-    #[must_use]
-    pub const fn name(self) -> &'static str {
-        match self {
-            Distribution::Uniform => "uniform",
-            Distribution::Gaussian => "gaussian",
-        }
-    }
-
-    /// The table of this distribution's [`VALUES`] values, in units of 2⁻¹², ascending.
-    #[must_use]
-    pub const fn table(self) -> &'static [i16; VALUES] {
-        match self {
-            Distribution::Uniform => &UNIFORM,
-            Distribution::Gaussian => &GAUSSIAN,
-        }
-    }
-
-    /// The largest magnitude in the table (the noise's bound).
-    #[must_use]
-    pub const fn largest(self) -> f32 {
-        let t = self.table();
-        let top = if -t[0] > t[VALUES - 1] {
-            -t[0]
-        } else {
-            t[VALUES - 1]
-        };
-        top as f32 / (1 << SHIFT) as f32
-    }
+/// The largest magnitude in `distribution`'s table (the noise's bound).
+const fn largest(distribution: Distribution) -> f32 {
+    let t = table(distribution);
+    let top = if -t[0] > t[VALUES - 1] {
+        -t[0]
+    } else {
+        t[VALUES - 1]
+    };
+    top as f32 / (1 << SHIFT) as f32
 }
 
 static UNIFORM: [i16; VALUES] = uniform_table();
@@ -191,14 +170,16 @@ const fn sqrt(x: f64) -> f64 {
 ///
 /// * **Value**: `table[h mod N]` for the cell's hash `h` (`CellHash` of `floor(p)`), constant
 ///   on each cell `[i, i + 1)ᴰ`, so discontinuous at cell borders (no gradient).
-/// * **Range**: the table's largest magnitude ([`Distribution`]): `1 − 1/N` for
-///   [`Uniform`](Distribution::Uniform), 3.2964 for [`Gaussian`](Distribution::Gaussian).
+/// * **Distribution**: [`Uniform`](Distribution::Uniform) in `[-1, 1]` by default, or
+///   [`Gaussian`](Distribution::Gaussian) ([`with_distribution`](Self::with_distribution)).
+/// * **Range**: the table's largest magnitude ([`largest`](Self::largest), [`table`]):
+///   `1 − 1/N` for uniform values, 3.2964 for Gaussian ones.
 /// * **Period**: 2³² cells per axis (the hash uses each cell's whole coordinate).
 ///
 /// # Examples
 ///
 /// ```
-/// use bandnoise::{Noise, lattice::{Distribution, WhiteNoise}};
+/// use bandnoise::{Noise, lattice::WhiteNoise, wavelet::Distribution};
 ///
 /// let white = WhiteNoise::new(7);
 /// // One value per cell.
@@ -222,6 +203,12 @@ impl WhiteNoise {
             hash: CellHash::new(seed),
             distribution: Distribution::Uniform,
         }
+    }
+
+    /// The largest magnitude of its values: its bound in every dimension.
+    #[must_use]
+    pub const fn largest(&self) -> f32 {
+        largest(self.distribution)
     }
 
     /// The same noise with values of `distribution`.
@@ -253,7 +240,7 @@ impl WhiteNoise {
     /// The value for a cell whose hash is `h`.
     #[inline]
     pub(crate) fn value_of_hash<R: Real>(&self, h: u32) -> R {
-        let table = self.distribution.table();
+        let table = table(self.distribution);
         // `% VALUES` is below `VALUES`: no bounds check.
         R::from_ratio(i32::from(table[h as usize % VALUES]), SHIFT)
     }
@@ -274,7 +261,7 @@ macro_rules! white_impls {
                 self.cell_value(cell)
             }
             fn amplitude_bound(&self) -> f32 {
-                self.distribution.largest()
+                largest(self.distribution)
             }
         }
     )*};
@@ -289,8 +276,8 @@ mod tests {
 
     #[test]
     fn tables_are_ascending_and_symmetric() {
-        for d in Distribution::ALL {
-            let t = d.table();
+        for d in [Distribution::Uniform, Distribution::Gaussian] {
+            let t = table(d);
             for k in 0..VALUES {
                 assert_eq!(t[k], -t[VALUES - 1 - k], "{d:?} {k}");
                 if k > 0 {

@@ -157,7 +157,7 @@ impl Default for Bands {
 }
 
 /// The distribution of multiband noise values.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Distribution {
     /// Gaussian with mean 0 and variance 1 (the natural distribution of wavelet noise).
     #[default]
