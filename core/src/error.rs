@@ -119,7 +119,8 @@ pub enum Error {
     NotPeriodic(&'static str),
     /// A wavelet setting (the tiling) asked for another noise.
     NotWavelet(&'static str),
-    /// A multiband setting (bands, distribution) asked for another noise.
+    /// A multiband setting asked for another noise: bands (multiband noise only) or a
+    /// distribution (multiband, white and cubic value noise).
     NotMultiband(&'static str),
     /// An impulse setting (density, count, kernel, weights) asked for a noise that is not
     /// made of impulses.
@@ -239,7 +240,7 @@ impl fmt::Display for Error {
             Error::NotMultiband(noise) => {
                 write!(
                     f,
-                    "{noise} noise has no bands or distribution (multiband only)"
+                    "{noise} noise has no bands (multiband only) or distribution (multiband, white, value-cubic)"
                 )
             }
             Error::NotImpulse(noise) => write!(

@@ -24,6 +24,7 @@
 //! gabor seed=5 frequency=2 bandwidth=0.5 direction=1,1 orientation=anisotropic
 //! simplex seed=9 fbm octaves=5
 //! cellular seed=2 output=f2-f1 metric=manhattan jitter=0.8
+//! value-cubic seed=6 distribution=gaussian
 //! ```
 //!
 //! | setting | value | default |
@@ -33,7 +34,7 @@
 //! | `tiling=` | `blended`, `varied` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `blended` |
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
-//! | `distribution=` | `gaussian` or `uniform` (multiband noise, [`Distribution`]) | `gaussian` |
+//! | `distribution=` | `gaussian` or `uniform` (multiband, white and value-cubic noise, [`Distribution`]) | `gaussian` (multiband), `uniform` (white, value-cubic) |
 //! | `density=` | impulses per kernel volume, `0.01` to the dimension's [`SparseConvolution::max_density`] (sparse and Gabor noise, Poisson counts) | `10` (sparse), `16` (Gabor) |
 //! | `count=` | impulses in every cell, `1..=32` (sparse and Gabor noise, instead of a density) | Poisson counts |
 //! | `kernel=` | `cosine` or `catmull-rom` (sparse noise, [`Kernel`]) | `cosine` |
@@ -102,7 +103,9 @@ use crate::impulse::{
     self, Envelope, Gabor, GaborParameters, Impulses, Kernel, Orientation, SparseConvolution,
     Weights,
 };
-use crate::lattice::{CNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise};
+use crate::lattice::{
+    CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise, WhiteNoise,
+};
 use crate::simplex::Simplex;
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
@@ -145,11 +148,16 @@ pub enum Base {
     Simplex,
     /// [`Cellular`]: Worley's cellular noise, 1D–4D. Text: `cellular`.
     Cellular,
+    /// [`WhiteNoise`]: Lewis's lattice white noise, 1D–4D. Text: `white`.
+    White,
+    /// [`CubicValueNoise`]: value noise with Catmull-Rom interpolation, 1D–4D. Text:
+    /// `value-cubic`.
+    ValueCubic,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 13] = [
+    pub const ALL: [Base; 15] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -163,6 +171,8 @@ impl Base {
         Base::Gabor,
         Base::Simplex,
         Base::Cellular,
+        Base::White,
+        Base::ValueCubic,
     ];
 
     /// The name in the text form.
@@ -182,6 +192,8 @@ impl Base {
             Base::Gabor => "gabor",
             Base::Simplex => "simplex",
             Base::Cellular => "cellular",
+            Base::White => "white",
+            Base::ValueCubic => "value-cubic",
         }
     }
 
@@ -201,7 +213,10 @@ impl Base {
     pub const fn is_lattice(self) -> bool {
         !self.is_wavelet()
             && !self.is_impulse()
-            && !matches!(self, Base::Wiener | Base::Simplex | Base::Cellular)
+            && !matches!(
+                self,
+                Base::Wiener | Base::Simplex | Base::Cellular | Base::White | Base::ValueCubic
+            )
     }
 
     /// Whether the noise is made of random impulses (and has impulse settings: density,
@@ -209,6 +224,12 @@ impl Base {
     #[must_use]
     pub const fn is_impulse(self) -> bool {
         matches!(self, Base::Sparse | Base::Gabor)
+    }
+
+    /// Whether the noise's values have a [`Distribution`] setting.
+    #[must_use]
+    pub const fn has_distribution(self) -> bool {
+        matches!(self, Base::Multiband | Base::White | Base::ValueCubic)
     }
 
     /// Whether the noise reads a wavelet tile (and has a [`Tiling`]).
@@ -265,7 +286,10 @@ impl Spec {
             axes: 0,
             tiling: Tiling::Blended,
             bands: DEFAULT_BANDS,
-            distribution: Distribution::Gaussian,
+            distribution: match base {
+                Base::White | Base::ValueCubic => Distribution::Uniform,
+                _ => Distribution::Gaussian,
+            },
             kernel: Kernel::Cosine,
             weights: Weights::Sign,
             density: match base {
@@ -346,13 +370,14 @@ impl Spec {
         Ok(self)
     }
 
-    /// The same multiband noise with values of `distribution`.
+    /// The same multiband, white or cubic value noise with values of `distribution`.
     ///
     /// # Errors
     ///
-    /// [`Error::NotMultiband`] unless the base is [`Base::Multiband`].
+    /// [`Error::NotMultiband`] unless the base is [`Base::Multiband`], [`Base::White`] or
+    /// [`Base::ValueCubic`].
     pub fn with_distribution(mut self, distribution: Distribution) -> Result<Self, Error> {
-        if self.base != Base::Multiband {
+        if !self.base.has_distribution() {
             return Err(Error::NotMultiband(self.base.name()));
         }
         self.distribution = distribution;
@@ -790,6 +815,10 @@ impl Spec {
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
             Base::Simplex => Any::Simplex(Simplex::new(s)),
+            Base::White => Any::White(WhiteNoise::new(s).with_distribution(self.distribution)),
+            Base::ValueCubic => {
+                Any::Cubic(CubicValueNoise::new(s).with_distribution(self.distribution))
+            }
             Base::Cellular => Any::Cellular(
                 Cellular::new(s)
                     .with_output(self.output)
@@ -837,6 +866,8 @@ impl fmt::Display for Spec {
                 }
                 decimal::write_f32(f, *w)?;
             }
+        }
+        if self.base.has_distribution() {
             f.write_str(match self.distribution {
                 Distribution::Gaussian => " distribution=gaussian",
                 Distribution::Uniform => " distribution=uniform",
@@ -997,7 +1028,7 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
-     wavelet, multiband, sparse, wiener, gabor, simplex, cellular)";
+     wavelet, multiband, sparse, wiener, gabor, simplex, cellular, white, value-cubic)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
      distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
      direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, fbm, turbulence, ridged, octaves=, \
@@ -1307,7 +1338,7 @@ impl FromStr for Spec {
                         .with_distribution(distribution)
                         .map_err(|e| ParseError {
                             position: at,
-                            expected: "distribution only for multiband noise",
+                            expected: "distribution only for multiband, white and value-cubic noise",
                             refused: Some(e),
                         })?;
                 }
@@ -1596,6 +1627,8 @@ enum Any<S: Tiles> {
     Gabor3(Gabor<3>),
     Simplex(Simplex),
     Cellular(Cellular),
+    White(WhiteNoise),
+    Cubic(CubicValueNoise),
 }
 
 /// A [`Spec`] built for `D` dimensions ([`Spec::build`]) over the wavelet tiles `S`: the
@@ -1732,6 +1765,8 @@ macro_rules! spec_noise {
                     Any::M4093(n) => with_period(n, period, op),
                     Any::Simplex(n) => op.run(n),
                     Any::Cellular(n) => op.run(n),
+                    Any::White(n) => op.run(n),
+                    Any::Cubic(n) => op.run(n),
                     Any::$sparse(n) => op.run(n),
                     Any::$wiener(n) => op.run(n),
                     $(Any::$gabor(n) => op.run(n),)?

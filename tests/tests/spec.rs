@@ -5,6 +5,7 @@
 use bandnoise::cellular::{Cellular, Metric, Output};
 use bandnoise::impulse::{Envelope, Gabor, Orientation};
 use bandnoise::impulse::{Kernel, SparseConvolution, Weights};
+use bandnoise::lattice::{CubicValueNoise, WhiteNoise};
 use bandnoise::prelude::*;
 use bandnoise::spec::{Base, ParseError, Spec, SpecNoise};
 use bandnoise::spec::{I16Tiles, Tiles};
@@ -513,6 +514,8 @@ fn every_noise_type_in_core_is_described() {
         ("Gabor", "gabor"),
         ("Simplex", "simplex"),
         ("Cellular", "cellular"),
+        ("WhiteNoise", "white"),
+        ("CubicValueNoise", "value-cubic"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -779,6 +782,66 @@ fn cellular_specs_sample_their_typed_noise_bit_for_bit() {
     );
 }
 
+/// White and cubic value specs sample their typed noises bit for bit (1D–4D, both
+/// distributions, and under a fractal sum); the distribution prints (uniform by default, not
+/// multiband's Gaussian), reads back, and is refused for other noises; no period.
+#[test]
+fn white_and_cubic_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(190);
+    for d in [Distribution::Uniform, Distribution::Gaussian] {
+        let white = WhiteNoise::new(3).with_distribution(d);
+        let cubic = CubicValueNoise::new(3).with_distribution(d);
+        for (spec, name) in [
+            (Spec::new(Base::White, 3), "white"),
+            (Spec::new(Base::ValueCubic, 3), "value-cubic"),
+        ] {
+            let spec = spec.with_distribution(d).unwrap();
+            let text = format!(
+                "{name} seed=3 distribution={}",
+                if d == Distribution::Uniform {
+                    "uniform"
+                } else {
+                    "gaussian"
+                }
+            );
+            assert_eq!(spec.to_string(), text);
+            assert_eq!(text.parse::<Spec>().unwrap(), spec);
+            if name == "white" {
+                same_bits::<1, _>(&spec, &white, &mut rng);
+                same_bits::<2, _>(&spec, &white, &mut rng);
+                same_bits::<3, _>(&spec, &white, &mut rng);
+                same_bits::<4, _>(&spec, &white, &mut rng);
+            } else {
+                same_bits::<1, _>(&spec, &cubic, &mut rng);
+                same_bits::<2, _>(&spec, &cubic, &mut rng);
+                same_bits::<3, _>(&spec, &cubic, &mut rng);
+                same_bits::<4, _>(&spec, &cubic, &mut rng);
+            }
+        }
+    }
+    assert_eq!(
+        Spec::new(Base::White, 0).to_string(),
+        "white seed=0 distribution=uniform"
+    );
+    let fbm: Spec = "value-cubic seed=9 fbm octaves=4".parse().expect("valid");
+    same_bits::<2, _>(
+        &fbm,
+        &Fractal::fbm(CubicValueNoise::new(9), Octaves::new(4, 1.99, 0.5).unwrap()),
+        &mut rng,
+    );
+    for (text, refused) in [
+        ("perlin distribution=uniform", Error::NotMultiband("perlin")),
+        ("white period=4,4", Error::NotPeriodic("white")),
+        ("value-cubic period=4", Error::NotPeriodic("value-cubic")),
+        ("white bands=1", Error::NotMultiband("white")),
+    ] {
+        let e = text.parse::<Spec>().unwrap_err();
+        assert_eq!(e.refused(), Some(refused), "{text}");
+    }
+    let e = "white distribution=cauchy".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), None);
+}
+
 /// A Wiener spec samples the typed noise it names bit for bit (value and gradient, f32 and
 /// I16F16, 1D–4D, both covariances), and a covariance is refused for other noises.
 #[test]
@@ -963,7 +1026,14 @@ fn consumers_take_their_noises_from_the_description() {
             assert!(
                 base.is_wavelet()
                     || base.is_impulse()
-                    || matches!(base, Base::Wiener | Base::Simplex | Base::Cellular),
+                    || matches!(
+                        base,
+                        Base::Wiener
+                            | Base::Simplex
+                            | Base::Cellular
+                            | Base::White
+                            | Base::ValueCubic
+                    ),
                 "{base}"
             );
         }

@@ -169,7 +169,8 @@ const fn sqrt(x: f64) -> f64 {
 /// Lattice white noise (Lewis 1989 §2.2) in 1 to 4 dimensions: see the [module docs](self).
 ///
 /// * **Value**: `table[h mod N]` for the cell's hash `h` (`CellHash` of `floor(p)`), constant
-///   on each cell `[i, i + 1)ᴰ`, so discontinuous at cell borders (no gradient).
+///   on each cell `[i, i + 1)ᴰ`, so discontinuous at cell borders (its
+///   [`NoiseGradient`](crate::NoiseGradient) is 0, the derivative inside the cells).
 /// * **Distribution**: [`Uniform`](Distribution::Uniform) in `[-1, 1]` by default, or
 ///   [`Gaussian`](Distribution::Gaussian) ([`with_distribution`](Self::with_distribution)).
 /// * **Range**: the table's largest magnitude ([`largest`](Self::largest), [`table`]):
@@ -262,6 +263,15 @@ macro_rules! white_impls {
             }
             fn amplitude_bound(&self) -> f32 {
                 largest(self.distribution)
+            }
+        }
+
+        /// The gradient is 0: the derivative wherever it exists (inside each cell; the noise
+        /// jumps at the cell borders, where it has none).
+        impl<R: Real> crate::NoiseGradient<R, $d> for WhiteNoise {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                (crate::Noise::sample(self, p), [R::ZERO; $d])
             }
         }
     )*};
