@@ -33,10 +33,12 @@ const LABELS = {
   gabor: 'Gabor (Lagae et al.)',
   simplex: 'simplex (Perlin 2001, Gustavson)',
   cellular: 'cellular, F1 (Worley)',
+  white: 'lattice white noise (Lewis)',
+  'value-cubic': 'value noise, Catmull-Rom',
 };
 
 function fillKinds() {
-  $('kind').replaceChildren(...kinds().map((name) => new Option(LABELS[name] || name, name)));
+  $('kind').replaceChildren(...kinds().split(' ').map((name) => new Option(LABELS[name] || name, name)));
 }
 
 function params() {

@@ -151,7 +151,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 14;
+const COMPOSED: usize = 15;
 
 fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let octaves = Octaves::default();
@@ -190,6 +190,11 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             .and_then(|s| s.with_jitter(jitter))
             .unwrap_or(plain)
     };
+    let gaussian_cubic = Spec::new(Base::ValueCubic, 7);
+    // Accepted for cubic value noise.
+    let gaussian_cubic = gaussian_cubic
+        .with_distribution(Distribution::Gaussian)
+        .unwrap_or(gaussian_cubic);
     let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
@@ -251,6 +256,7 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             3,
             200,
         ),
+        ("gaussian value-cubic 3D", gaussian_cubic, 3, 200),
     ]
 }
 

@@ -213,28 +213,33 @@ const UNIT: i32 = 1 << 16;
 /// some axis, and `F2` is at most 4.5 away (Manhattan, 4D, jitter 1; see [`Cellular`]).
 const MAX_RING: i32 = 5;
 
-/// The 3ᴰ offsets of rings 0 and 1 in `D` dimensions (first `NEAR_CELLS[D]` entries): the
-/// point's own cell, then the cells sharing a face with it, then an edge, and so on, so the
-/// nearest boxes come first and the `F` they find prunes the farther ones (Worley's order).
-const NEAR_ORDER: [[[i8; 4]; 81]; 5] = [
-    near_order(0),
-    near_order(1),
-    near_order(2),
-    near_order(3),
-    near_order(4),
-];
+/// The 3ᴰ offsets of rings 0 and 1 in `D` dimensions ([`near_order`]): the point's own cell,
+/// then the cells sharing a face with it, then an edge, and so on, so the nearest boxes come
+/// first and the `F` they find prunes the farther ones (Worley's order). One table per
+/// dimension, so a program links only those it samples (the demo's module: 108 bytes).
+static NEAR_1: [[i8; 4]; 3] = near_order(1);
+static NEAR_2: [[i8; 4]; 9] = near_order(2);
+static NEAR_3: [[i8; 4]; 27] = near_order(3);
+static NEAR_4: [[i8; 4]; 81] = near_order(4);
 
-/// `3ᴰ`.
-const NEAR_CELLS: [usize; 5] = [1, 3, 9, 27, 81];
+/// The near table of `D` dimensions (1 to 4).
+fn near_table<const D: usize>() -> &'static [[i8; 4]] {
+    match D {
+        1 => &NEAR_1,
+        2 => &NEAR_2,
+        3 => &NEAR_3,
+        _ => &NEAR_4,
+    }
+}
 
-const fn near_order(dims: usize) -> [[i8; 4]; 81] {
-    let mut out = [[0i8; 4]; 81];
+const fn near_order<const N: usize>(dims: usize) -> [[i8; 4]; N] {
+    let mut out = [[0i8; 4]; N];
     let mut n = 0;
     // By the number of non-zero offsets, then in odometer order.
     let mut nonzero = 0;
     while nonzero <= dims {
         let mut i = 0;
-        while i < NEAR_CELLS[dims] {
+        while i < N {
             let (mut k, mut rest, mut count, mut a) = ([0i8; 4], i, 0, 0);
             while a < dims {
                 k[a] = (rest % 3) as i8 - 1;
@@ -491,10 +496,10 @@ impl Cellular {
         };
 
         // Rings 0 and 1, the 3ᴰ cells around the point's, nearest boxes first (see
-        // `NEAR_ORDER`); a cell whose box of possible points is out of reach is skipped before
+        // `NEAR_1`); a cell whose box of possible points is out of reach is skipped before
         // it is hashed. Axis a's box keys for offsets −1, 0, 1:
         let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
-        for k in &NEAR_ORDER[D][..NEAR_CELLS[D]] {
+        for k in near_table::<D>() {
             let k: [i32; D] = core::array::from_fn(|a| i32::from(k[a]));
             let mut box_key = R::ZERO;
             for a in 0..D {

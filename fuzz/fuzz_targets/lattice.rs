@@ -1,6 +1,6 @@
 //! Every lattice noise of the runtime description (`bandnoise::spec::Base`, so a lattice noise
-//! added there is fuzzed unasked), simplex noise and cellular noise (its output, metric and
-//! jitter from the input; a cell value is not compared across number types, since rounding can
+//! added there is fuzzed unasked), simplex noise, white and cubic value noise (either
+//! distribution) and cellular noise (its output, metric and jitter from the input; a cell value is not compared across number types, since rounding can
 //! change which point is nearest), sampled through the description (bit for bit the typed
 //! noise: tests/tests/spec.rs), 1D–4D, in f32 and I16F16, with arbitrary bit patterns as
 //! coordinates and seeds: no panic, never NaN or -0.0, within the documented bound; fixed point
@@ -18,6 +18,7 @@ use bandnoise::lattice::{Perlin, TabledPerlin};
 use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::vector::{Curl2, Curl3, VectorNoise};
+use bandnoise::wavelet::Distribution;
 use bandnoise::{I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
@@ -187,7 +188,8 @@ fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
 
 fuzz_target!(|input: Input| {
     let base = Base::ALL[usize::from(input.base) % Base::ALL.len()];
-    if !base.is_lattice() && !matches!(base, Base::Simplex | Base::Cellular) {
+    let values = matches!(base, Base::White | Base::ValueCubic);
+    if !base.is_lattice() && !values && !matches!(base, Base::Simplex | Base::Cellular) {
         return;
     }
     let floats = input.bits.map(f32::from_bits);
@@ -196,6 +198,11 @@ fuzz_target!(|input: Input| {
     let exact = fixed.iter().all(|x| x.to_bits().unsigned_abs() < 256 << 16);
     let spec = if base == Base::Cellular {
         cellular(input.seed, input.periods)
+    } else if values {
+        let d = [Distribution::Uniform, Distribution::Gaussian][input.periods[0] as usize % 2];
+        Spec::new(base, input.seed)
+            .with_distribution(d)
+            .expect("a distribution for white and cubic value noise")
     } else {
         Spec::new(base, input.seed)
     };
@@ -210,7 +217,7 @@ fuzz_target!(|input: Input| {
     if base == Base::Simplex {
         assert!(spec.with_period(&input.periods).is_err());
         curl(input.seed, floats, fixed);
-    } else if base == Base::Cellular {
+    } else if base == Base::Cellular || values {
         assert!(spec.with_period(&input.periods).is_err());
     } else {
         periodic(&spec, input.periods, floats, fixed);

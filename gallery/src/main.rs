@@ -149,13 +149,19 @@ fn write_png(path: &Path, size: u32, pixels: &[u8]) -> Result<(), String> {
     Ok(())
 }
 
-/// Composed descriptions: fractal sums, and a tile of 4 × 4 cells with its fBm (lacunarity 2
-/// keeps the period: the image repeats), with the gallery's seed.
-const COMPOSED: [(&str, &str); 6] = [
+/// Composed descriptions: fractal sums, cubic value noise over Gaussian values, and a tile of
+/// 4 × 4 cells with its fBm (lacunarity 2 keeps the period: the image repeats), with the
+/// gallery's seed.
+const COMPOSED: [(&str, &str); 8] = [
     ("perlin-fbm-2d", "perlin fbm"),
     ("perlin-turbulence-2d", "perlin turbulence"),
     ("perlin-ridged-2d", "perlin ridged"),
     ("mnoise-fbm-2d", "mnoise fbm"),
+    ("value-cubic-fbm-2d", "value-cubic fbm"),
+    (
+        "value-cubic-gaussian-2d",
+        "value-cubic distribution=gaussian",
+    ),
     ("perlin-periodic-2d", "perlin period=4,4"),
     (
         "perlin-periodic-fbm-2d",

@@ -11,15 +11,17 @@ use wasm_bindgen::prelude::*;
 
 use crate::render::WebTiles;
 
-/// The names of the noises the demo can show, in the description's order: every
-/// [`Base`] with a 3D form (the page's third axis is time).
+/// The names of the noises the demo can show, separated by spaces, in the description's
+/// order: every [`Base`] with a 3D form (the page's third axis is time). One string, not an
+/// array: wasm-bindgen's array of strings costs the module 1 KB.
 #[wasm_bindgen]
-pub fn kinds() -> Vec<String> {
-    let mut names = Vec::new();
-    for base in Base::ALL {
-        if base.has_dimension(3) {
-            names.push(String::from(base.name()));
+pub fn kinds() -> String {
+    let mut names = String::new();
+    for base in Base::ALL.into_iter().filter(|b| b.has_dimension(3)) {
+        if !names.is_empty() {
+            names.push(' ');
         }
+        names.push_str(base.name());
     }
     names
 }

@@ -79,38 +79,16 @@ impl CubicValueNoise {
     #[inline]
     fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(&self, p: [R; D]) -> (R, [R; D]) {
         let (cell, frac) = split_point(p);
-        let half = R::from_ratio(1, 1);
         let mut w = [[R::ZERO; 4]; D];
         let mut dw = [[R::ZERO; 4]; D];
         for a in 0..D {
-            let t = frac[a];
-            let u = R::ONE - t;
-            let (tt, uu) = (t.mul_rn(t), u.mul_rn(u));
-            // 5/2 − 3t/2, and the same of u.
-            let (lt, lu) = (
-                R::from_ratio(5, 1) - (half + R::ONE).mul_rn(t),
-                R::from_ratio(5, 1) - (half + R::ONE).mul_rn(u),
-            );
-            w[a] = [
-                -half.mul_rn(t).mul_rn(uu),
-                R::ONE - tt.mul_rn(lt),
-                R::ONE - uu.mul_rn(lu),
-                -half.mul_rn(tt).mul_rn(u),
-            ];
-            if GRADIENT {
-                // 5 − 9t/2, and the same of u.
-                let nine_halves = R::from_ratio(9, 1);
-                let (mt, mu) = (
-                    R::from_i32(5) - nine_halves.mul_rn(t),
-                    R::from_i32(5) - nine_halves.mul_rn(u),
-                );
-                dw[a] = [
-                    -half.mul_rn(u).mul_rn(u - t - t),
-                    -t.mul_rn(mt),
-                    u.mul_rn(mu),
-                    -half.mul_rn(t).mul_rn(u + u - t),
-                ];
-            }
+            let (t, u) = (frac[a], R::ONE - frac[a]);
+            // The weights are symmetric: the points at 1 and 2 see `u` as those at 0 and −1
+            // see `t`, and d/dt = −d/du.
+            let ([far, near, d_far, d_near], [far_u, near_u, d_far_u, d_near_u]) =
+                (side::<R, GRADIENT>(t, u), side::<R, GRADIENT>(u, t));
+            w[a] = [far, near, near_u, far_u];
+            dw[a] = [d_far, d_near, -d_near_u, -d_far_u];
         }
         let (value, gradient) =
             self.sum::<R, D, GRADIENT>(self.white.hash().start(), &cell, &w, &dw);
@@ -141,18 +119,38 @@ impl CubicValueNoise {
                 .hash()
                 .step(h, c.wrapping_add(i as i32 - 1) as u32);
             let (v, g) = self.sum::<R, D, GRADIENT>(hi, cells, w, dw);
-            value = value + wa[i].mul_rn(v);
+            value = value + wa[i].mul_fraction(v);
             if GRADIENT {
                 for (total, g) in gradient.iter_mut().zip(g).skip(axis + 1) {
-                    *total = *total + wa[i].mul_rn(g);
+                    *total = *total + wa[i].mul_fraction(g);
                 }
                 if let Some(total) = gradient.get_mut(axis) {
-                    *total = *total + da[i].mul_rn(v);
+                    *total = *total + da[i].mul_fraction(v);
                 }
             }
         }
         (value, gradient)
     }
+}
+
+/// One side's Catmull-Rom weights for a point `t` past the lattice point 0 (`u = 1 − t`):
+/// the far point −1's `−t u²/2` and the near point 0's `1 − t²(5 − 3t)/2`, and, where
+/// `GRADIENT`, their derivatives along `t`, `−u(u − 2t)/2` and `−t(5 − 9t/2)` (else 0).
+///
+/// Every product has a factor of magnitude at most 1 (`t`, `u`, `½` or their products), so
+/// `mul_fraction` rounds as `mul_rn` without its saturation.
+#[inline]
+fn side<R: Real, const GRADIENT: bool>(t: R, u: R) -> [R; 4] {
+    let half = R::from_ratio(1, 1);
+    let tt = t.mul_fraction(t);
+    let far = -half.mul_fraction(t).mul_fraction(u.mul_fraction(u));
+    let near = R::ONE - tt.mul_fraction(R::from_ratio(5, 1) - R::from_ratio(3, 1).mul_fraction(t));
+    if !GRADIENT {
+        return [far, near, R::ZERO, R::ZERO];
+    }
+    let d_far = -half.mul_fraction(u).mul_fraction(u - t - t);
+    let d_near = -t.mul_fraction(R::from_i32(5) - R::from_ratio(9, 1).mul_fraction(t));
+    [far, near, d_far, d_near]
 }
 
 macro_rules! cubic_impls {

@@ -7,7 +7,7 @@
 //! | [`TabledPerlin`] | as [`Perlin`], plus a per-seed table for the point kernel | | | |
 //! | [`OriginalPerlin`] | Perlin 1985 | permutation, x innermost | a table of 256 random unit vectors | cubic |
 //! | [`ValueNoise`] | pbrt §10.6 intro; Lewis 1989 §2 | permutation, x innermost | none: a value in `[-1, 1]` per point | quintic |
-//! | [`WhiteNoise`] | Lewis 1989 §2.2 | [`CellHash`](crate::hash::CellHash) into a prime-length [`table`] | none: constant per cell | none |
+//! | [`WhiteNoise`] | Lewis 1989 §2.2 | [`CellHash`](crate::hash::CellHash) into a prime-length table ([`table_value`]) | none: constant per cell | none |
 //! | [`CubicValueNoise`] | Lewis 1989 §2.3 | as [`WhiteNoise`], 4ᴰ points | none: [`WhiteNoise`]'s values | Catmull-Rom |
 //! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
 //! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
@@ -47,7 +47,7 @@ pub use original::OriginalPerlin;
 pub use periodic::Periodic;
 pub use perlin::{Perlin, TabledPerlin};
 pub use value::ValueNoise;
-pub use white::{VALUES, WhiteNoise, table};
+pub use white::{VALUES, WhiteNoise, table_value};
 
 use crate::batch::{self, Grid, LANES};
 use crate::{Error, Real};

@@ -5,7 +5,7 @@
 //! probability density" whose length is prime (`Rantab[i % RANTABLEN]`). bandnoise's index is
 //! the seed's [`CellHash`] of the cell (the hash every cell-based noise shares; Lewis's
 //! per-axis indirection tables are its role), and its tables hold [`VALUES`] (a prime)
-//! stratified quantiles of a [`Distribution`] ([`table`]): value `k` is the quantile at `(k + ½)/N`, so
+//! stratified quantiles of a [`Distribution`] ([`table_value`]): value `k` is the quantile at `(k + ½)/N`, so
 //! the table's values follow the distribution as closely as `N` values can, in 1/4096 steps
 //! (exact in every number type, so `f32`, `f64` and I16F16 give the same values). The order
 //! of the table does not matter: the hash picks an entry at random.
@@ -24,34 +24,51 @@ pub const VALUES: usize = 1021;
 /// The table's values are in units of 2⁻¹² (exact in `f32`, `f64` and I16F16).
 const SHIFT: u32 = 12;
 
-/// The table of `distribution`'s [`VALUES`] values, in units of 2⁻¹², ascending.
+/// Value `k` (of [`VALUES`], ascending) of `distribution`'s table, in units of 2⁻¹²; `k` is
+/// taken modulo [`VALUES`].
 ///
 /// * [`Uniform`](Distribution::Uniform): `(2k + 1)/N − 1`, uniform in `[-1, 1]` (mean 0,
-///   variance `(1 − 1/N²)/3 ≈ ⅓`, largest magnitude `1 − 1/N`).
-/// * [`Gaussian`](Distribution::Gaussian): the standard normal's quantiles at `(k + ½)/N`
+///   variance `(1 − 1/N²)/3 ≈ ⅓`, largest magnitude `1 − 1/N`), computed.
+/// * [`Gaussian`](Distribution::Gaussian): the standard normal's quantile at `(k + ½)/N`
 ///   (mean 0; variance 0.9987 and largest magnitude 3.2964, both of the table itself, as `N`
-///   stratified values have a slightly shorter tail than the distribution).
+///   stratified values have a slightly shorter tail than the distribution), read from the
+///   upper half of the table (the lower half is its mirror image), 1022 bytes.
+///
+/// ```
+/// use bandnoise::lattice::{VALUES, table_value};
+/// use bandnoise::wavelet::Distribution;
+///
+/// assert_eq!(table_value(Distribution::Uniform, 0), -4092); // −1 + 1/1021, to 2⁻¹²
+/// assert_eq!(table_value(Distribution::Gaussian, VALUES / 2), 0); // the median
+/// ```
 #[must_use]
-pub const fn table(distribution: Distribution) -> &'static [i16; VALUES] {
-    match distribution {
-        Distribution::Uniform => &UNIFORM,
-        Distribution::Gaussian => &GAUSSIAN,
-    }
+pub const fn table_value(distribution: Distribution, k: usize) -> i16 {
+    let k = k % VALUES;
+    // The tables are odd about their middle entry: |value| from the distance to it.
+    let (negative, j) = if k < MIDDLE {
+        (true, MIDDLE - k)
+    } else {
+        (false, k - MIDDLE)
+    };
+    let magnitude = match distribution {
+        // round(j · 2¹³ / N): j · 8192 + N/2 < 2³¹.
+        Distribution::Uniform => ((j as u32 * 8192 + VALUES as u32 / 2) / VALUES as u32) as i16,
+        // `j ≤ MIDDLE`: in the table (no bounds check after `%`).
+        Distribution::Gaussian => GAUSSIAN_HALF[j % (MIDDLE + 1)],
+    };
+    if negative { -magnitude } else { magnitude }
 }
+
+/// The middle entry (value 0) of a table.
+const MIDDLE: usize = VALUES / 2;
 
 /// The largest magnitude in `distribution`'s table (the noise's bound).
 const fn largest(distribution: Distribution) -> f32 {
-    let t = table(distribution);
-    let top = if -t[0] > t[VALUES - 1] {
-        -t[0]
-    } else {
-        t[VALUES - 1]
-    };
-    top as f32 / (1 << SHIFT) as f32
+    table_value(distribution, VALUES - 1) as f32 / (1 << SHIFT) as f32
 }
 
-static UNIFORM: [i16; VALUES] = uniform_table();
-static GAUSSIAN: [i16; VALUES] = gaussian_table();
+/// The Gaussian table's upper half: entries `MIDDLE..VALUES`.
+static GAUSSIAN_HALF: [i16; MIDDLE + 1] = gaussian_half();
 
 /// `round(v · 2¹²)`, halves away from zero (so the tables are symmetric).
 const fn quantise(v: f64) -> i16 {
@@ -64,22 +81,14 @@ const fn quantise(v: f64) -> i16 {
     r as i16
 }
 
-const fn uniform_table() -> [i16; VALUES] {
-    let mut t = [0i16; VALUES];
-    let mut k = 0;
-    while k < VALUES {
-        t[k] = quantise((2 * k + 1) as f64 / VALUES as f64 - 1.0);
-        k += 1;
-    }
-    t
-}
-
-const fn gaussian_table() -> [i16; VALUES] {
-    let mut t = [0i16; VALUES];
-    let mut k = 0;
-    while k < VALUES {
-        t[k] = quantise(normal_quantile((k as f64 + 0.5) / VALUES as f64));
-        k += 1;
+const fn gaussian_half() -> [i16; MIDDLE + 1] {
+    let mut t = [0i16; MIDDLE + 1];
+    let mut j = 0;
+    while j <= MIDDLE {
+        t[j] = quantise(normal_quantile(
+            (MIDDLE + j) as f64 / VALUES as f64 + 0.5 / VALUES as f64,
+        ));
+        j += 1;
     }
     t
 }
@@ -173,7 +182,7 @@ const fn sqrt(x: f64) -> f64 {
 ///   [`NoiseGradient`](crate::NoiseGradient) is 0, the derivative inside the cells).
 /// * **Distribution**: [`Uniform`](Distribution::Uniform) in `[-1, 1]` by default, or
 ///   [`Gaussian`](Distribution::Gaussian) ([`with_distribution`](Self::with_distribution)).
-/// * **Range**: the table's largest magnitude ([`largest`](Self::largest), [`table`]):
+/// * **Range**: the table's largest magnitude ([`largest`](Self::largest), [`table_value`]):
 ///   `1 − 1/N` for uniform values, 3.2964 for Gaussian ones.
 /// * **Period**: 2³² cells per axis (the hash uses each cell's whole coordinate).
 ///
@@ -241,9 +250,7 @@ impl WhiteNoise {
     /// The value for a cell whose hash is `h`.
     #[inline]
     pub(crate) fn value_of_hash<R: Real>(&self, h: u32) -> R {
-        let table = table(self.distribution);
-        // `% VALUES` is below `VALUES`: no bounds check.
-        R::from_ratio(i32::from(table[h as usize % VALUES]), SHIFT)
+        R::from_ratio(i32::from(table_value(self.distribution, h as usize)), SHIFT)
     }
 }
 
@@ -284,19 +291,34 @@ crate::noise::inherent_amplitude_bound!(WhiteNoise, []);
 mod tests {
     use super::*;
 
+    /// The tables' values by definition: the quantiles at `(k + ½)/N`, rounded to 2⁻¹²
+    /// (uniform: `(2k + 1)/N − 1`).
     #[test]
-    fn tables_are_ascending_and_symmetric() {
-        for d in [Distribution::Uniform, Distribution::Gaussian] {
-            let t = table(d);
-            for k in 0..VALUES {
-                assert_eq!(t[k], -t[VALUES - 1 - k], "{d:?} {k}");
+    fn tables_hold_the_stratified_quantiles() {
+        for k in 0..VALUES {
+            let p = (k as f64 + 0.5) / VALUES as f64;
+            assert_eq!(
+                table_value(Distribution::Uniform, k),
+                quantise(2.0 * p - 1.0),
+                "{k}"
+            );
+            assert_eq!(
+                table_value(Distribution::Gaussian, k),
+                quantise(normal_quantile(p)),
+                "{k}"
+            );
+            for d in [Distribution::Uniform, Distribution::Gaussian] {
+                assert_eq!(
+                    table_value(d, k),
+                    -table_value(d, VALUES - 1 - k),
+                    "{d:?} {k}"
+                );
                 if k > 0 {
-                    assert!(t[k - 1] <= t[k], "{d:?} {k}");
+                    assert!(table_value(d, k - 1) < table_value(d, k), "{d:?} {k}");
                 }
             }
         }
-        assert_eq!(UNIFORM[VALUES / 2], 0);
-        assert_eq!(GAUSSIAN[VALUES / 2], 0);
+        assert_eq!(table_value(Distribution::Gaussian, MIDDLE), 0);
     }
 
     #[test]

@@ -1,10 +1,11 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, simplex noise 1D–4D, curl noise, fractal sums, wavelet bands, projected and multiband noise,
-//! sparse, Wiener and Gabor noise, batches, integer outputs (`levels`), and the public
-//! helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and `cos_turns`) in I16F16 and f32 on
-//! inputs the optimiser cannot see (`nopanic-spec` proves the runtime descriptions and
-//! `nopanic-text` their text form), and its panic handler calls a function that does not exist.
-//! If any panic path survives optimisation, the link fails. Built, not run (release, thumbv7em).
+//! 1D–4D, simplex, white and cubic value noise 1D–4D, curl noise, fractal sums, wavelet bands,
+//! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
+//! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
+//! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
+//! runtime descriptions and `nopanic-text` their text form), and its panic handler calls a
+//! function that does not exist. If any panic path survives optimisation, the link fails.
+//! Built, not run (release, thumbv7em).
 #![no_std]
 #![no_main]
 
@@ -17,7 +18,8 @@ use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution};
 use bandnoise::lattice::{
-    CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+    CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+    WhiteNoise,
 };
 use bandnoise::levels::Levels;
 use bandnoise::simplex::Simplex;
@@ -64,6 +66,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         all_dims!(c);
         add(c.sample_with_gradient([p[0], p[1], p[2]]).1[2]);
     }
+    // Either distribution (the optimiser cannot tell which).
+    let distribution = black_box(Distribution::Gaussian);
+    all_dims!(WhiteNoise::new(black_box(1)).with_distribution(distribution));
+    let cubic = CubicValueNoise::new(black_box(1)).with_distribution(distribution);
+    all_dims!(cubic);
+    add(cubic.sample_with_gradient(p).1[3]);
     add(Curl2::new(Simplex::new(black_box(2))).sample_vector([p[0], p[1]])[1]);
     let flow = Curl3::new(Perlin::new(black_box(1)), Simplex::new(2), CNoise::new(3));
     add(flow.sample_vector([p[0], p[1], p[2]])[2]);
