@@ -29,12 +29,15 @@ cargo build -p bandnoise-wasm-bench --profile web --target wasm32-unknown-unknow
 for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
     name=${crate%%:*} rest=${crate#*:}
     dir=web/${rest%%:*} profile=${rest#*:}
+    # The demo's module for size (-Oz, run to a fixed point: its budget), the benchmark
+    # page's for speed (-Os keeps its loops as fast as -O3, and smaller).
+    if [ "$profile" = web-demo ]; then wasm_opt=(-Oz --converge); else wasm_opt=(-Os); fi
     rm -rf "$dir"
     wasm-bindgen "target/wasm32-unknown-unknown/$profile/$name.wasm" \
         --target web --out-dir "$dir" --no-typescript
     # The features rustc's wasm32 target emits, plus simd128; not -all, which lets wasm-opt use
     # encodings Chromium does not enable by default.
-    tests/e2e/node_modules/.bin/wasm-opt -Os --strip-producers --strip-target-features \
+    tests/e2e/node_modules/.bin/wasm-opt "${wasm_opt[@]}" --strip-producers --strip-target-features \
         --enable-simd --enable-bulk-memory --enable-nontrapping-float-to-int --enable-sign-ext \
         --enable-mutable-globals --enable-multivalue --enable-reference-types \
         "$dir/${name}_bg.wasm" -o "$dir/${name}_bg.wasm"

@@ -556,7 +556,10 @@ macro_rules! impl_real_float {
                     ratio_far(num, shift) as $t
                 }
             }
-            #[inline]
+            // Out of line with the `small` feature: inlined at each of the many call sites it
+            // cost the demo's wasm module 2 KB (for a call per coordinate).
+            #[cfg_attr(feature = "small", inline(never))]
+            #[cfg_attr(not(feature = "small"), inline)]
             fn split(self) -> (i32, Self) {
                 // In range, a truncating cast and one correction give floor() without libm;
                 // `as` is defined (saturating, NaN → 0) on every target.

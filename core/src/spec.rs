@@ -815,9 +815,13 @@ impl Spec {
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
             Base::Simplex => Any::Simplex(Simplex::new(s)),
-            Base::White => Any::White(WhiteNoise::new(s).with_distribution(self.distribution)),
-            Base::ValueCubic => {
-                Any::Cubic(CubicValueNoise::new(s).with_distribution(self.distribution))
+            Base::White | Base::ValueCubic => {
+                let white = WhiteNoise::new(s).with_distribution(self.distribution);
+                if self.base == Base::White {
+                    Any::White(white)
+                } else {
+                    Any::Cubic(CubicValueNoise::interpolating(white))
+                }
             }
             Base::Cellular => Any::Cellular(
                 Cellular::new(s)

@@ -55,6 +55,12 @@ impl CubicValueNoise {
         }
     }
 
+    /// The Catmull-Rom interpolant of `white`'s values.
+    #[must_use]
+    pub const fn interpolating(white: WhiteNoise) -> Self {
+        Self { white }
+    }
+
     /// The same noise with lattice values of `distribution`.
     #[must_use]
     pub const fn with_distribution(self, distribution: Distribution) -> Self {
@@ -90,16 +96,34 @@ impl CubicValueNoise {
             w[a] = [far, near, near_u, far_u];
             dw[a] = [d_far, d_near, -d_near_u, -d_far_u];
         }
-        let (value, gradient) =
-            self.sum::<R, D, GRADIENT>(self.white.hash().start(), &cell, &w, &dw);
+        let start = self.white.hash().start();
+        let (value, gradient) = if GRADIENT {
+            self.sum_with_gradient(start, &cell, &w, &dw)
+        } else {
+            (self.sum(start, &cell, &w), [R::ZERO; D])
+        };
         (value.canonical(), gradient.map(R::canonical))
     }
 
     /// The interpolation over the axes `cells` (the last ones of the point's cell) of the
     /// lattice values whose hashes continue `h`: the weighted sum over axis `cells[0]`'s four
-    /// lattice points of the sums over the remaining axes, and its gradient (the axes before
-    /// `cells[0]` are zero). At no axes left, the lattice value of `h`.
-    fn sum<R: Real, const D: usize, const GRADIENT: bool>(
+    /// lattice points of the sums over the remaining axes. At no axes left, the lattice value
+    /// of `h`. (One function for every dimension.)
+    fn sum<R: Real>(&self, h: u32, cells: &[i32], w: &[[R; 4]]) -> R {
+        let (Some((&c, cells)), Some((wa, w))) = (cells.split_first(), w.split_first()) else {
+            return self.white.value_of_hash(h);
+        };
+        let mut value = R::ZERO;
+        for (k, wk) in (-1..).zip(wa) {
+            let hk = self.white.hash().step(h, c.wrapping_add(k) as u32);
+            value = value + wk.mul_fraction(self.sum(hk, cells, w));
+        }
+        value
+    }
+
+    /// [`sum`](Self::sum) and its gradient (the axes before `cells[0]` are zero), from the
+    /// weights `w` and their derivatives `dw`.
+    fn sum_with_gradient<R: Real, const D: usize>(
         &self,
         h: u32,
         cells: &[i32],
@@ -118,15 +142,13 @@ impl CubicValueNoise {
                 .white
                 .hash()
                 .step(h, c.wrapping_add(i as i32 - 1) as u32);
-            let (v, g) = self.sum::<R, D, GRADIENT>(hi, cells, w, dw);
+            let (v, g) = self.sum_with_gradient::<R, D>(hi, cells, w, dw);
             value = value + wa[i].mul_fraction(v);
-            if GRADIENT {
-                for (total, g) in gradient.iter_mut().zip(g).skip(axis + 1) {
-                    *total = *total + wa[i].mul_fraction(g);
-                }
-                if let Some(total) = gradient.get_mut(axis) {
-                    *total = *total + da[i].mul_fraction(v);
-                }
+            for (total, g) in gradient.iter_mut().zip(g).skip(axis + 1) {
+                *total = *total + wa[i].mul_fraction(g);
+            }
+            if let Some(total) = gradient.get_mut(axis) {
+                *total = *total + da[i].mul_fraction(v);
             }
         }
         (value, gradient)

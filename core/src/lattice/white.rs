@@ -53,8 +53,8 @@ pub const fn table_value(distribution: Distribution, k: usize) -> i16 {
     let magnitude = match distribution {
         // round(j · 2¹³ / N): j · 8192 + N/2 < 2³¹.
         Distribution::Uniform => ((j as u32 * 8192 + VALUES as u32 / 2) / VALUES as u32) as i16,
-        // `j ≤ MIDDLE`: in the table (no bounds check after `%`).
-        Distribution::Gaussian => GAUSSIAN_HALF[j % (MIDDLE + 1)],
+        // `j ≤ MIDDLE`: in the table (`min` shows it, no bounds check).
+        Distribution::Gaussian => GAUSSIAN_HALF[if j < MIDDLE { j } else { MIDDLE }],
     };
     if negative { -magnitude } else { magnitude }
 }
