@@ -13,7 +13,8 @@
 //! * [`hash`]: Olano's Blum-Blum-Shub hash, Perlin's permutation, a well-mixed cell hash and a
 //!   cell's own random numbers.
 //! * [`lattice`]: Perlin (improved and original), value noise, Olano's cNoise and mNoise, 1D–4D,
-//!   and any of them periodic ([`Periodic`](lattice::Periodic)).
+//!   and any of them periodic ([`Periodic`](lattice::Periodic)); Lewis's lattice white noise
+//!   and its Catmull-Rom interpolant.
 //! * [`simplex`]: simplex noise (Perlin 2001, Gustavson 2005), 1D–4D, continuous, with its
 //!   analytic gradient.
 //! * [`cellular`]: Worley's cellular noise, 1D–4D: `F1`, `F2`, `F2 − F1` or the cell's value
@@ -67,6 +68,7 @@
 //! | [`CellHash`](hash::CellHash) | is mixed into the start of every cell's hash chain | as any other seed |
 //! | [`SparseConvolution`](impulse::SparseConvolution), [`Gabor`](impulse::Gabor) | is its [`CellHash`](hash::CellHash)'s seed: every cell's impulses change | as any other seed |
 //! | [`Cellular`](cellular::Cellular) | is its [`CellHash`](hash::CellHash)'s seed: every cell's feature point and value change | as any other seed |
+//! | [`WhiteNoise`](lattice::WhiteNoise), [`CubicValueNoise`](lattice::CubicValueNoise) | is its [`CellHash`](hash::CellHash)'s seed: every cell's table entry changes | as any other seed |
 //!
 //! Different seeds give decorrelated noise (tested: |correlation| < 0.05 on a 256² grid).
 //!
@@ -115,7 +117,8 @@ pub mod prelude {
     pub use crate::fractal::{Fractal, Kind, Octaves};
     pub use crate::impulse::{Gabor, SparseConvolution};
     pub use crate::lattice::{
-        CNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
+        CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin,
+        ValueNoise, WhiteNoise,
     };
     pub use crate::simplex::Simplex;
     pub use crate::vector::{Curl2, Curl3, VectorNoise};

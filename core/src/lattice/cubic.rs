@@ -1,15 +1,4 @@
-//! Value noise with cubic (Catmull-Rom) interpolation (Lewis 1989 §2.3): lattice white noise
-//! ([`WhiteNoise`]) interpolated by the tensor product of Catmull-Rom splines over the 4ᴰ
-//! nearest lattice values.
-//!
-//! Catmull-Rom weights for the fraction `t` and the lattice points at `−1, 0, 1, 2`:
-//! `w₋₁ = −t(1 − t)²/2`, `w₀ = 1 − t²(5 − 3t)/2`, `w₁ = 1 − (1 − t)²(2 + 3t)/2`,
-//! `w₂ = −t²(1 − t)/2`. They sum to 1, pass through the lattice values (`w = (0, 1, 0, 0)` at
-//! `t = 0`), and the noise is C¹. Lewis's point stands: interpolated white noise is low-pass,
-//! not band-pass (its mean is not removed), and its spectrum falls as ω⁻⁴; Catmull-Rom's
-//! negative lobes ring a little, so it overshoots its lattice values. It costs 4ᴰ cell hashes
-//! (16 in 2D, 64 in 3D, 256 in 4D), each an integer mix, against the 2ᴰ of linear-fade value
-//! noise ([`ValueNoise`](super::ValueNoise)).
+//! Value noise with cubic (Catmull-Rom) interpolation (Lewis 1989 §2.3): [`CubicValueNoise`].
 
 use super::white::WhiteNoise;
 use crate::Real;
@@ -17,8 +6,19 @@ use crate::hash::chain::ChainHash;
 use crate::lattice::kernel::split_point;
 use crate::wavelet::Distribution;
 
-/// Value noise with Catmull-Rom interpolation in 1 to 4 dimensions: see the
-/// [module docs](self).
+/// Value noise with cubic (Catmull-Rom) interpolation (Lewis 1989 §2.3): lattice white noise
+/// ([`WhiteNoise`]) interpolated by the tensor product of Catmull-Rom splines over the 4ᴰ
+/// nearest lattice values.
+///
+/// Catmull-Rom weights for the fraction `t` and the lattice points at `−1, 0, 1, 2`:
+/// `w₋₁ = −t(1 − t)²/2`, `w₀ = 1 − t²(5 − 3t)/2`, `w₁ = 1 − (1 − t)²(2 + 3t)/2`,
+/// `w₂ = −t²(1 − t)/2`. They sum to 1, pass through the lattice values (`w = (0, 1, 0, 0)` at
+/// `t = 0`), and the noise is C¹. Lewis's point stands: interpolated white noise is low-pass,
+/// not band-pass (its mean is not removed), and its spectrum falls as ω⁻⁴; Catmull-Rom's
+/// negative lobes ring a little, so it overshoots its lattice values. It costs 4ᴰ cell hashes
+/// (16 in 2D, 64 in 3D, 256 in 4D), each an integer mix, against the 2ᴰ of linear-fade value
+/// noise ([`ValueNoise`](super::ValueNoise)).
+///
 ///
 /// * **Lattice values**: [`WhiteNoise`]'s for the same seed and distribution: at every
 ///   integer point `n`, `CubicValueNoise::sample(n)` is exactly `WhiteNoise::sample(n)`, in

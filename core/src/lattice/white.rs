@@ -1,17 +1,4 @@
-//! Lattice white noise (Lewis 1989 §2.2, Fig. 1): an uncorrelated random value per integer
-//! cell, constant across the cell.
-//!
-//! Lewis hashes a point's cell into an index of a table of random values "with the desired
-//! probability density" whose length is prime (`Rantab[i % RANTABLEN]`). bandnoise's index is
-//! the seed's [`CellHash`] of the cell (the hash every cell-based noise shares; Lewis's
-//! per-axis indirection tables are its role), and its tables hold [`VALUES`] (a prime)
-//! stratified quantiles of a [`Distribution`] ([`table_value`]): value `k` is the quantile at `(k + ½)/N`, so
-//! the table's values follow the distribution as closely as `N` values can, in 1/4096 steps
-//! (exact in every number type, so `f32`, `f64` and I16F16 give the same values). The order
-//! of the table does not matter: the hash picks an entry at random.
-//!
-//! It is the input that interpolation and filtering turn into smooth noise (Lewis §2.3):
-//! [`CubicValueNoise`](super::CubicValueNoise) interpolates these values.
+//! Lattice white noise (Lewis 1989 §2.2): [`WhiteNoise`] and its tables.
 
 use crate::Real;
 use crate::hash::CellHash;
@@ -175,7 +162,21 @@ const fn sqrt(x: f64) -> f64 {
     y
 }
 
-/// Lattice white noise (Lewis 1989 §2.2) in 1 to 4 dimensions: see the [module docs](self).
+/// Lattice white noise (Lewis 1989 §2.2, Fig. 1): an uncorrelated random value per integer
+/// cell, constant across the cell.
+///
+/// Lewis hashes a point's cell into an index of a table of random values "with the desired
+/// probability density" whose length is prime (`Rantab[i % RANTABLEN]`). bandnoise's index is
+/// the seed's [`CellHash`] of the cell (the hash every cell-based noise shares; Lewis's
+/// per-axis indirection tables are its role), and its tables hold [`VALUES`] (a prime)
+/// stratified quantiles of a [`Distribution`] ([`table_value`]): value `k` is the quantile at `(k + ½)/N`, so
+/// the table's values follow the distribution as closely as `N` values can, in 1/4096 steps
+/// (exact in every number type, so `f32`, `f64` and I16F16 give the same values). The order
+/// of the table does not matter: the hash picks an entry at random.
+///
+/// It is the input that interpolation and filtering turn into smooth noise (Lewis §2.3):
+/// [`CubicValueNoise`](super::CubicValueNoise) interpolates these values.
+///
 ///
 /// * **Value**: `table[h mod N]` for the cell's hash `h` (`CellHash` of `floor(p)`), constant
 ///   on each cell `[i, i + 1)ᴰ`, so discontinuous at cell borders (its
