@@ -137,18 +137,15 @@ impl CubicValueNoise {
         };
         let axis = D - 1 - cells.len();
         let (mut value, mut gradient) = (R::ZERO, [R::ZERO; D]);
-        for i in 0..4 {
-            let hi = self
-                .white
-                .hash()
-                .step(h, c.wrapping_add(i as i32 - 1) as u32);
-            let (v, g) = self.sum_with_gradient::<R, D>(hi, cells, w, dw);
-            value = value + wa[i].mul_fraction(v);
+        for (k, (wk, dk)) in (-1..).zip(wa.iter().zip(da)) {
+            let hk = self.white.hash().step(h, c.wrapping_add(k) as u32);
+            let (v, g) = self.sum_with_gradient::<R, D>(hk, cells, w, dw);
+            value = value + wk.mul_fraction(v);
             for (total, g) in gradient.iter_mut().zip(g).skip(axis + 1) {
-                *total = *total + wa[i].mul_fraction(g);
+                *total = *total + wk.mul_fraction(g);
             }
             if let Some(total) = gradient.get_mut(axis) {
-                *total = *total + da[i].mul_fraction(v);
+                *total = *total + dk.mul_fraction(v);
             }
         }
         (value, gradient)

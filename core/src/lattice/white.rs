@@ -4,6 +4,7 @@ use crate::Real;
 use crate::hash::CellHash;
 use crate::lattice::kernel::split_point;
 use crate::wavelet::Distribution;
+use crate::wavelet::constmath::{ln, sqrt};
 
 /// The length of each table of values: a prime, as Lewis's `RANTABLEN`.
 pub const VALUES: usize = 1021;
@@ -40,7 +41,7 @@ pub const fn table_value(distribution: Distribution, k: usize) -> i16 {
     let magnitude = match distribution {
         // round(j · 2¹³ / N): j · 8192 + N/2 < 2³¹.
         Distribution::Uniform => ((j as u32 * 8192 + VALUES as u32 / 2) / VALUES as u32) as i16,
-        // `j ≤ MIDDLE`: in the table (`min` shows it, no bounds check).
+        // `j ≤ MIDDLE`: in the table (the comparison shows it, no bounds check).
         Distribution::Gaussian => GAUSSIAN_HALF[if j < MIDDLE { j } else { MIDDLE }],
     };
     if negative { -magnitude } else { magnitude }
@@ -82,8 +83,8 @@ const fn gaussian_half() -> [i16; MIDDLE + 1] {
 
 /// `Φ⁻¹(p)` for `p` in `(0, 1)`: Acklam's rational approximation (relative error below
 /// 1.2·10⁻⁹, far below the tables' 2⁻¹³ rounding; the tables are checked against `erfc` in
-/// `tests/tests/white.rs`). `const`, so the tables are built at compile time, identically on
-/// every target.
+/// `tests/tests/white.rs`). `const` (with the wavelet tiles' `ln` and `sqrt`), so the tables
+/// are built at compile time, identically on every target.
 const fn normal_quantile(p: f64) -> f64 {
     const A: [f64; 6] = [
         -3.969_683_028_665_376e1,
@@ -131,35 +132,6 @@ const fn normal_quantile(p: f64) -> f64 {
         (((((A[0] * r + A[1]) * r + A[2]) * r + A[3]) * r + A[4]) * r + A[5]) * q
             / (((((B[0] * r + B[1]) * r + B[2]) * r + B[3]) * r + B[4]) * r + 1.0)
     }
-}
-
-/// `ln x` for a normal positive `x`: `x = m·2ᵉ` with `m` in `[1, 2)`, `ln m = 2 atanh s` with
-/// `s = (m − 1)/(m + 1) ≤ ⅓`, whose series' 25 terms reach `f64` precision.
-const fn ln(x: f64) -> f64 {
-    let bits = x.to_bits();
-    let e = ((bits >> 52) & 0x7FF) as i64 - 1023;
-    let m = f64::from_bits((bits & ((1 << 52) - 1)) | (1023 << 52));
-    let s = (m - 1.0) / (m + 1.0);
-    let s2 = s * s;
-    let (mut term, mut sum, mut k) = (s, 0.0, 0);
-    while k < 25 {
-        sum += term / (2 * k + 1) as f64;
-        term *= s2;
-        k += 1;
-    }
-    e as f64 * core::f64::consts::LN_2 + 2.0 * sum
-}
-
-/// `√x` for `x > 0` by Newton's iteration from a power of two near it.
-const fn sqrt(x: f64) -> f64 {
-    let e = ((x.to_bits() >> 52) & 0x7FF) as i64 - 1023;
-    let mut y = f64::from_bits(((e / 2 + 1023) as u64) << 52);
-    let mut i = 0;
-    while i < 64 {
-        y = 0.5 * (y + x / y);
-        i += 1;
-    }
-    y
 }
 
 /// Lattice white noise (Lewis 1989 §2.2, Fig. 1): an uncorrelated random value per integer
@@ -322,6 +294,7 @@ mod tests {
         assert_eq!(table_value(Distribution::Gaussian, MIDDLE), 0);
     }
 
+    /// The wavelet tiles' const `ln` and `sqrt`, over the range the Gaussian table's tails use.
     #[test]
     fn const_math_is_accurate() {
         for x in [1e-300, 1e-9, 0.02, 0.5, 1.0, 3.0, 1e10] {

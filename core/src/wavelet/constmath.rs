@@ -1,4 +1,5 @@
-//! The math tile generation needs, as `const fn`, so tiles are computed at compile time.
+//! The math tile generation needs, as `const fn`, so tiles are computed at compile time (white
+//! noise's Gaussian table uses its `ln` and `sqrt` too).
 //!
 //! Loops are kept out of the per-value work (the series are unrolled): rustc's
 //! `long_running_const_eval` lint counts loop iterations of a constant's evaluation, and a 32³
