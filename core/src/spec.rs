@@ -211,12 +211,16 @@ impl Base {
     /// a cell's corners).
     #[must_use]
     pub const fn is_lattice(self) -> bool {
-        !self.is_wavelet()
-            && !self.is_impulse()
-            && !matches!(
-                self,
-                Base::Wiener | Base::Simplex | Base::Cellular | Base::White | Base::ValueCubic
-            )
+        // Named, not excluded: a base added later is not periodic until it says so.
+        matches!(
+            self,
+            Base::Perlin
+                | Base::OriginalPerlin
+                | Base::Value
+                | Base::CNoise
+                | Base::MNoise
+                | Base::MNoise4093
+        )
     }
 
     /// Whether the noise is made of random impulses (and has impulse settings: density,
