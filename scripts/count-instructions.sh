@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Instructions per sample of 2D mNoise, 2D and 3D Perlin, 2D wavelet, 2D and 3D sparse
-# convolution, Wiener, Gabor and simplex noise, in I16F16 and f32, of 8-bit outputs (`levels`), and per frame of the LED example, on Cortex-M0 (soft float),
-# Cortex-M4F and RV32IMC, counted in QEMU's instruction trace (deterministic, unlike time). Also
-# the footprint of the LED example and of minimal firmware that calls only fixed-point 2D mNoise
-# or 2D Perlin noise. Needs QEMU (scripts/test.sh installs it).
+# Instructions per sample of mNoise (2D–4D, computed and from Olano's table, and 4-octave
+# turbulence), 2D and 3D Perlin, 2D wavelet, 2D and 3D sparse convolution, Wiener, Gabor,
+# simplex and cellular noise, in I16F16 and f32, of 8-bit outputs (`levels`), and per frame of
+# the LED example, on Cortex-M0 (soft float), Cortex-M4F and RV32IMC, counted in QEMU's
+# instruction trace (deterministic, unlike time). Also the footprint of the LED example and of
+# minimal firmware that calls only fixed-point 2D mNoise, 2D Perlin noise, or 3D mNoise
+# computed or from the table. Needs QEMU (scripts/test.sh installs it).
 set -euo pipefail
 cd "$(dirname "$0")/../firmware"
 work=$(mktemp -d)
@@ -17,7 +19,9 @@ output_names=("baseline u8" "perlin 2D I16F16 u8" "mnoise 2D I16F16 u8" "perlin 
 impulse_names=("baseline impulse" "sparse 2D I16F16" "sparse 2D f32" "sparse 3D I16F16" "sparse 3D f32"
     "sparse 3D I16F16 3 per cell" "wiener 2D I16F16" "wiener 2D f32" "wiener band-pass 2D I16F16"
     "wiener 3D I16F16" "gabor 2D I16F16" "gabor 2D f32" "gabor 3D I16F16" "gabor 2D I16F16 isotropic"
-    "simplex 2D I16F16" "simplex 2D f32" "simplex 3D I16F16" "cellular 2D I16F16" "cellular 2D f32")
+    "simplex 2D I16F16" "simplex 2D f32" "simplex 3D I16F16" "cellular 2D I16F16" "cellular 2D f32"
+    "mnoise 3D I16F16" "mixed mnoise 3D I16F16" "mnoise 4D I16F16" "mixed mnoise 4D I16F16"
+    "mnoise 3D f32" "mixed mnoise 3D f32" "turbulence4 mnoise 3D I16F16" "turbulence4 mixed 3D I16F16")
 samples=16
 trace="-accel tcg,one-insn-per-tb=on -d exec,nochain -D $work/exec.log"
 
@@ -97,14 +101,22 @@ for name in ("simplex 2D I16F16", "simplex 3D I16F16", "cellular 2D I16F16"):
     perlin = rows[name.replace("simplex", "perlin").replace("cellular", "perlin")]
     print(f"Cortex-M0: {name} {float(rows[name]):.0f} instructions per sample, "
           f"{float(rows[name]) / float(perlin):.2f}× Perlin")
+# Issue 19, point 4: Olano's table evaluation beside computed mNoise (bit-identical: the
+# firmware asserts it).
+for name in ("mnoise 3D I16F16", "mnoise 4D I16F16", "mnoise 3D f32", "turbulence4 mnoise 3D I16F16"):
+    mixed = float(rows[name.replace("mnoise", "mixed") if "turbulence" in name else "mixed " + name])
+    print(f"Cortex-M0: {name} computed {float(rows[name]):.0f}, from the table {mixed:.0f} "
+          f"instructions per sample ({mixed / float(rows[name]):.2f}×)")
 sys.exit("goal missed" if failed else 0)
 PY
 
 # Footprint: flash and RAM from the ELF section headers.
-cargo build -q --release -p firmware-cortex-m --bin empty --bin minimal --bin minimal-perlin --bin led --target thumbv6m-none-eabi
+cargo build -q --release -p firmware-cortex-m --bin empty --bin minimal --bin minimal-perlin --bin led \
+    --bin minimal-mnoise-3d --bin minimal-mixed-3d --target thumbv6m-none-eabi
 echo
 echo "footprint on thumbv6m (bytes)"
-python3 ../scripts/elf-size.py target/thumbv6m-none-eabi/release/{empty,minimal,minimal-perlin,led} | tee "$work/size.txt"
+python3 ../scripts/elf-size.py target/thumbv6m-none-eabi/release/{empty,minimal,minimal-perlin,led,minimal-mnoise-3d,minimal-mixed-3d} |
+    tee "$work/size.txt"
 added=$(awk '/^minimal adds/ { print $3 }' "$work/size.txt")
 # Issue 16: at most 1.5 KB for fixed-point 2D mNoise (FastLED's 2D inoise16: about 800 bytes).
 if [ "$added" -gt 1536 ]; then

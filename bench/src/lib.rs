@@ -14,7 +14,7 @@ use bandnoise::batch::Grid;
 use bandnoise::cellular::Cellular;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
-use bandnoise::lattice::{MNoise, Perlin, TabledPerlin, ValueNoise};
+use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise};
 use bandnoise::simplex::Simplex;
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
@@ -61,7 +61,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 19] = [
+pub const FUNCTIONS: [&str; 26] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -69,6 +69,13 @@ pub const FUNCTIONS: [&str; 19] = [
     "tabled-perlin-3d",
     "mnoise-2d",
     "mnoise-3d",
+    "mnoise-4d",
+    "mixed-mnoise-3d",
+    "mixed-mnoise-4d",
+    "mnoise-3d-tilted",
+    "mixed-mnoise-3d-tilted",
+    "turbulence4-mnoise-3d-tilted",
+    "turbulence4-mixed-3d-tilted",
     "value-2d",
     "wavelet-2d",
     "wavelet-3d",
@@ -150,6 +157,17 @@ impl Layout {
         Box::new(move |rows, out| self.points(rows, out, |x, y| noise.sample(at::<D>(x, y))))
     }
 
+    /// Point evaluation of `noise` over the grid tilted out of the plane `z = Z`
+    /// (`z = Z + 0.29·x + 0.53·y`), in 3D: every sample has its own `z`, so no work on `z` can
+    /// be hoisted out of the loop over a row (the `-tilted` rows).
+    pub fn point_tilted<No: Noise<f32, 3> + 'static>(self, noise: No) -> Run {
+        Box::new(move |rows, out| {
+            self.points(rows, out, |x, y| {
+                noise.sample([x, y, Z + 0.29 * x + 0.53 * y])
+            })
+        })
+    }
+
     /// Point evaluation of `noise` projected along `normal` over the grid, in 3D (no batch
     /// path: projection has none).
     pub fn projected<No: ProjectedNoise<f32> + 'static>(self, noise: No, normal: [f32; 3]) -> Run {
@@ -199,6 +217,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         n
     };
     let fbm = || Fractal::fbm(Perlin::new(0), Octaves::new(6, 2.0, 0.5).unwrap());
+    // Olano's turbulence (4 octaves, lacunarity 2), octave by octave.
+    let turbulence = || Fractal::turbulence(MNoise::new(0), Octaves::new(4, 2.0, 0.5).unwrap());
     // The speed goal's configuration: 3 impulses in every cell (Peachey's count).
     let sparse3 = || SparseConvolution::<3>::new(0).with_fixed_count(3).unwrap();
     let l = layout;
@@ -217,6 +237,18 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("mnoise-2d", "bandnoise-batch") => l.batch::<_, 2>(MNoise::new(0)),
         ("mnoise-3d", "bandnoise") => l.point::<_, 3>(MNoise::new(0)),
         ("mnoise-3d", "bandnoise-batch") => l.batch::<_, 3>(MNoise::new(0)),
+        ("mnoise-4d", "bandnoise") => l.point::<_, 4>(MNoise::new(0)),
+        ("mnoise-4d", "bandnoise-batch") => l.batch::<_, 4>(MNoise::new(0)),
+        ("mixed-mnoise-3d", "bandnoise") => l.point::<_, 3>(MixedMNoise::new(0)),
+        ("mixed-mnoise-3d", "bandnoise-batch") => l.batch::<_, 3>(MixedMNoise::new(0)),
+        ("mixed-mnoise-4d", "bandnoise") => l.point::<_, 4>(MixedMNoise::new(0)),
+        ("mixed-mnoise-4d", "bandnoise-batch") => l.batch::<_, 4>(MixedMNoise::new(0)),
+        ("mnoise-3d-tilted", "bandnoise") => l.point_tilted(MNoise::new(0)),
+        ("mixed-mnoise-3d-tilted", "bandnoise") => l.point_tilted(MixedMNoise::new(0)),
+        ("turbulence4-mnoise-3d-tilted", "bandnoise") => l.point_tilted(turbulence()),
+        ("turbulence4-mixed-3d-tilted", "bandnoise") => {
+            l.point_tilted(MixedTurbulence::<4>::new(0))
+        }
         ("value-2d", "bandnoise") => l.point::<_, 2>(ValueNoise::new(0)),
         ("value-2d", "bandnoise-batch") => l.batch::<_, 2>(ValueNoise::new(0)),
         ("wavelet-2d", "bandnoise") => l.point::<_, 2>(Wavelet::new(0, &TILE2)),
@@ -394,8 +426,12 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
 pub fn peer_function(function: &str) -> &str {
     match function {
         "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "sparse-2d" => "perlin-2d",
+        "mnoise-4d" | "mixed-mnoise-4d" => "perlin-4d",
         "tabled-perlin-3d"
         | "mnoise-3d"
+        | "mixed-mnoise-3d"
+        | "mnoise-3d-tilted"
+        | "mixed-mnoise-3d-tilted"
         | "wavelet-3d"
         | "wavelet-projected-axis"
         | "wavelet-projected-oblique"

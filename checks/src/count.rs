@@ -2,8 +2,9 @@
 //! between two marker calls, so QEMU's instruction trace can count what one sample costs.
 
 use bandnoise::cellular::Cellular;
+use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::{Gabor, Orientation, SparseConvolution};
-use bandnoise::lattice::{MNoise, Perlin};
+use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin};
 use bandnoise::levels::Levels;
 use bandnoise::simplex::Simplex;
 use bandnoise::wavelet::{TILE2_I16, Tiling, Wavelet};
@@ -45,10 +46,11 @@ pub const OUTPUT_NAMES: [&str; 7] = [
 /// The workloads of [`run_impulse`], in its order: sparse convolution noise at its default
 /// density (10 impulses per kernel volume) and at 3 impulses per cell, Wiener noise, and Gabor
 /// noise at its defaults (16 impulses per kernel volume), and simplex noise (the noises added
-/// after the lattice noises) and cellular noise (F1, Euclidean, jitter 1), with their own
-/// baseline. A program of its own (the firmware's
-/// `count-impulse`), as [`OUTPUT_NAMES`].
-pub const IMPULSE_NAMES: [&str; 19] = [
+/// after the lattice noises) and cellular noise (F1, Euclidean, jitter 1), and 3D and 4D mNoise
+/// computed and from Olano's table ([`MixedMNoise`]), and Olano's 4-octave 3D turbulence
+/// octave by octave ([`Fractal`]) and with the octaves together ([`MixedTurbulence`]), with their
+/// own baseline. A program of its own (the firmware's `count-impulse`), as [`OUTPUT_NAMES`].
+pub const IMPULSE_NAMES: [&str; 27] = [
     "baseline impulse",
     "sparse 2D I16F16",
     "sparse 2D f32",
@@ -68,6 +70,14 @@ pub const IMPULSE_NAMES: [&str; 19] = [
     "simplex 3D I16F16",
     "cellular 2D I16F16",
     "cellular 2D f32",
+    "mnoise 3D I16F16",
+    "mixed mnoise 3D I16F16",
+    "mnoise 4D I16F16",
+    "mixed mnoise 4D I16F16",
+    "mnoise 3D f32",
+    "mixed mnoise 3D f32",
+    "turbulence4 mnoise 3D I16F16",
+    "turbulence4 mixed 3D I16F16",
 ];
 
 /// A point for sample `i`, away from the lattice, in `[0, 8)^D`.
@@ -197,5 +207,33 @@ pub fn run_impulse(begin: fn(), end: fn()) -> u32 {
     let cellular = Cellular::new(1);
     acc ^= workload::<I16F16, 2>(begin, end, |q| bits(cellular.sample(q)));
     acc ^= workload::<f32, 2>(begin, end, |q| bits(cellular.sample(q)));
+    // The table evaluation must give the computed noise's bits on every core: the program
+    // fails (panics, which exits QEMU with an error) where it does not.
+    let (computed, mixed) = (MNoise::<61>::new(1), MixedMNoise::new(1));
+    let pairs = [
+        (
+            workload::<I16F16, 3>(begin, end, |q| bits(computed.sample(q))),
+            workload::<I16F16, 3>(begin, end, |q| bits(mixed.sample(q))),
+        ),
+        (
+            workload::<I16F16, 4>(begin, end, |q| bits(computed.sample(q))),
+            workload::<I16F16, 4>(begin, end, |q| bits(mixed.sample(q))),
+        ),
+        (
+            workload::<f32, 3>(begin, end, |q| bits(computed.sample(q))),
+            workload::<f32, 3>(begin, end, |q| bits(mixed.sample(q))),
+        ),
+    ];
+    let octaves = Octaves::new(4, 2.0, 0.5).unwrap_or_default();
+    let turbulence = Fractal::turbulence(computed, octaves);
+    let together = MixedTurbulence::<4>::new(1);
+    let turbulence_pair = (
+        workload::<I16F16, 3>(begin, end, |q| bits(turbulence.sample(q))),
+        workload::<I16F16, 3>(begin, end, |q| bits(together.sample(q))),
+    );
+    for (c, m) in pairs.into_iter().chain([turbulence_pair]) {
+        assert_eq!(c, m, "mixed mNoise differs from computed mNoise");
+        acc ^= c;
+    }
     acc
 }

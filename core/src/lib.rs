@@ -57,12 +57,13 @@
 //! which normalises its band weights at run time, and
 //! [`SparseConvolution::new`](impulse::SparseConvolution::new) and
 //! [`Gabor::new`](impulse::Gabor::new), which tabulate their Poisson counts and normalise their
-//! variance, and [`WienerNoise::new`](wiener::WienerNoise::new). How the seed enters:
+//! variance, [`WienerNoise::new`](wiener::WienerNoise::new) and
+//! [`MixedTurbulence::new`](lattice::MixedTurbulence::new). How the seed enters:
 //!
 //! | noise | the seed … | seed 0 |
 //! |---|---|---|
 //! | [`Perlin`](lattice::Perlin), [`TabledPerlin`](lattice::TabledPerlin), [`Simplex`](simplex::Simplex), [`OriginalPerlin`](lattice::OriginalPerlin), [`ValueNoise`](lattice::ValueNoise), [`CNoise`](lattice::CNoise) | reshuffles the permutation (Fisher–Yates driven by SplitMix64 of the seed) | Perlin's 2002 table |
-//! | [`MNoise`](lattice::MNoise) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
+//! | [`MNoise`](lattice::MNoise), [`MixedMNoise`](lattice::MixedMNoise), [`MixedTurbulence`](lattice::MixedTurbulence) | translates the lattice by `o ∈ [0, M)⁴` and flips gradient axes by a 4-bit mask (SplitMix64 of the seed) | Olano's noise, untouched |
 //! | [`Wavelet`](wavelet::Wavelet) | picks each tile-sized block's orientation (48 in 3D, 8 in 2D) by a hash of the block and the seed | one orientation hash like any other |
 //! | [`Multiband`](wavelet::Multiband) | as [`Wavelet`](wavelet::Wavelet), and translates each band by a hash of the seed and the band | as any other seed |
 //! | [`CellHash`](hash::CellHash) | is mixed into the start of every cell's hash chain | as any other seed |
@@ -117,8 +118,8 @@ pub mod prelude {
     pub use crate::fractal::{Fractal, Kind, Octaves};
     pub use crate::impulse::{Gabor, SparseConvolution};
     pub use crate::lattice::{
-        CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin,
-        ValueNoise, WhiteNoise,
+        CNoise, CubicValueNoise, MNoise, MixedMNoise, MixedTurbulence, OriginalPerlin, Periodic,
+        Perlin, TabledPerlin, ValueNoise, WhiteNoise,
     };
     pub use crate::simplex::Simplex;
     pub use crate::vector::{Curl2, Curl3, VectorNoise};

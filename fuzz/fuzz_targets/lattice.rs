@@ -14,7 +14,8 @@
 use arbitrary::Arbitrary;
 use bandnoise::batch::LANES;
 use bandnoise::cellular::{Metric, Output};
-use bandnoise::lattice::{Perlin, TabledPerlin};
+use bandnoise::fractal::{Fractal, Octaves};
+use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
 use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::vector::{Curl2, Curl3, VectorNoise};
@@ -162,6 +163,33 @@ fn tabled(seed: u32, floats: [f32; 4]) {
     assert_eq!(a.to_bits(), b.to_bits(), "3D {x} {y} {z}");
 }
 
+/// mNoise from Olano's table is the computed mNoise, bit for bit, in 2D–4D in f32 and I16F16,
+/// and so is its turbulence (3D, 4 octaves) the fractal sum's.
+fn mixed(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
+    let (computed, mixed) = (MNoise::<61>::new(seed), MixedMNoise::new(seed));
+    let [x, y, z, w] = floats;
+    for (a, b) in [
+        (computed.sample([x, y]), mixed.sample([x, y])),
+        (computed.sample([x, y, z]), mixed.sample([x, y, z])),
+        (computed.sample(floats), mixed.sample(floats)),
+    ] {
+        let (a, b): (f32, f32) = (a, b);
+        assert_eq!(a.to_bits(), b.to_bits(), "{floats:?}");
+    }
+    let q = [fixed[0], fixed[1], fixed[2]];
+    let (a, b): (I16F16, I16F16) = (computed.sample(q), mixed.sample(q));
+    assert_eq!(a, b, "{fixed:?}");
+    let (a, b): (I16F16, I16F16) = (computed.sample(fixed), mixed.sample(fixed));
+    assert_eq!(a, b, "{fixed:?}");
+    let octaves = Octaves::new(4, 2.0, 0.5).expect("valid octaves");
+    let sum = Fractal::turbulence(computed, octaves);
+    let together = MixedTurbulence::<4>::new(seed);
+    let (a, b): (I16F16, I16F16) = (sum.sample(q), together.sample(q));
+    assert_eq!(a, b, "turbulence {fixed:?}");
+    let (a, b): (f32, f32) = (sum.sample([x, y, w]), together.sample([x, y, w]));
+    assert_eq!(a.to_bits(), b.to_bits(), "turbulence {floats:?}");
+}
+
 /// Curl noise over simplex noise (2D) and three Perlin noises (3D): finite, and in fixed
 /// point bounded by the potentials' gradients (a few units per cell).
 fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
@@ -224,5 +252,8 @@ fuzz_target!(|input: Input| {
     }
     if base == Base::Perlin {
         tabled(input.seed, floats);
+    }
+    if base == Base::MNoise {
+        mixed(input.seed, floats, fixed);
     }
 });

@@ -8,6 +8,7 @@
 //! |---|---|---|
 //! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture) | `None`: the shared kernel of [`lattice`](crate::lattice) |
 //! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`, four lanes at a time) | one lane at a time |
+//! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
 //! so the choice changes speed only, never a bit of a result (each kernel's tests compare them).
@@ -35,11 +36,14 @@ use portable as selected;
 // * `PerlinPairs`: a seed's table for the point kernels, built by `const fn` from the doubled
 //   permutation (16 KiB on x86-64, empty where no kernel uses it), and `perlin2_paired`,
 //   `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
+// * `OCTAVES_AS_LANES`: whether a sum of octaves is faster as one lattice body over the octaves
+//   as lanes (vector units) than as one body per octave (scalar cores, where the lanes' values
+//   spill to the stack). Either gives the same bits.
 // * `sqrt_lanes(x)`: `Real::sqrt` of each lane (`√x` for `x > 0`, else 0), in place. IEEE
 //   square roots are correctly rounded, so a vector instruction gives libm's bits.
 pub(crate) use selected::{
-    PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
-    sqrt_lanes,
+    OCTAVES_AS_LANES, PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired,
+    perlin4, sqrt_lanes,
 };
 
 #[cfg(test)]

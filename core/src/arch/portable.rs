@@ -3,6 +3,9 @@
 
 pub(crate) const PERLIN_POINT: bool = false;
 
+/// Scalar cores: a short lattice body per octave keeps its values in registers.
+pub(crate) const OCTAVES_AS_LANES: bool = false;
+
 #[inline]
 pub(crate) fn perlin2(_: &[u8; 512], _: f32, _: f32) -> Option<f32> {
     None

@@ -17,7 +17,7 @@ use crate::hash::{Bbs, Permutation, seed::splitmix64};
 
 /// `Σ_a ±d_a` with the sign of axis `a` from bit `a` of `h`.
 #[inline]
-fn corner_dot<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
+pub(super) fn corner_dot<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
     let mut sum = signed(h, 0, d[0]);
     for (a, x) in d.iter().enumerate().skip(1) {
         sum = sum + signed(h, a as u32, *x);
@@ -26,7 +26,7 @@ fn corner_dot<R: Real, const D: usize>(h: u32, d: &[R; D]) -> R {
 }
 
 #[inline]
-fn corner_gradient<R: Real, const D: usize>(h: u32) -> [R; D] {
+pub(super) fn corner_gradient<R: Real, const D: usize>(h: u32) -> [R; D] {
     let mut g = [R::ZERO; D];
     for (a, ga) in g.iter_mut().enumerate() {
         *ga = signed(h, a as u32, R::ONE);
@@ -72,9 +72,9 @@ fn corner_gradient<R: Real, const D: usize>(h: u32) -> [R; D] {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct MNoise<const M: u32 = 61> {
-    offset: [u32; 4],
-    flip: u32,
-    inner: [u32; 4],
+    pub(super) offset: [u32; 4],
+    pub(super) flip: u32,
+    pub(super) inner: [u32; 4],
 }
 
 impl MNoise {

@@ -11,6 +11,7 @@
 //! | [`CubicValueNoise`] | Lewis 1989 §2.3 | as [`WhiteNoise`], 4ᴰ points | none: [`WhiteNoise`]'s values | Catmull-Rom |
 //! | [`CNoise`] | Olano 2005 §3.2 | permutation, last axis innermost | cube corners `(±1, ±1, …)` | quintic |
 //! | [`MNoise`] | Olano 2005 §3.3 | [`Bbs`](crate::hash::Bbs) `x² mod M`, last axis innermost | cube corners | quintic |
+//! | [`MixedMNoise`] | Olano 2005 §3.4 | as [`MNoise<61>`], its two innermost steps from one 2D table | cube corners | quintic |
 //!
 //! [`Periodic`] wraps any of them to integer periods per axis.
 //!
@@ -35,6 +36,7 @@
 mod corner;
 mod cubic;
 pub(crate) mod kernel;
+mod mixed;
 mod original;
 mod periodic;
 pub(crate) mod perlin;
@@ -43,6 +45,7 @@ mod white;
 
 pub use corner::{CNoise, MNoise};
 pub use cubic::CubicValueNoise;
+pub use mixed::{MixedMNoise, MixedTurbulence};
 pub use original::OriginalPerlin;
 pub use periodic::Periodic;
 pub use perlin::{Perlin, TabledPerlin};

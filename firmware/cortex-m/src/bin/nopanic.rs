@@ -1,5 +1,5 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, simplex, white and cubic value noise 1D–4D, curl noise, fractal sums, wavelet bands,
+//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, white and cubic value noise 1D–4D, curl noise, fractal sums, wavelet bands,
 //! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
 //! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
 //! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
@@ -18,8 +18,8 @@ use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution};
 use bandnoise::lattice::{
-    CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, TabledPerlin, ValueNoise,
-    WhiteNoise,
+    CNoise, CubicValueNoise, MNoise, MixedMNoise, MixedTurbulence, OriginalPerlin, Periodic,
+    Perlin, TabledPerlin, ValueNoise, WhiteNoise,
 };
 use bandnoise::levels::Levels;
 use bandnoise::simplex::Simplex;
@@ -56,6 +56,9 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     all_dims!(ValueNoise::new(black_box(1)));
     all_dims!(CNoise::new(black_box(1)));
     all_dims!(MNoise::<61>::new(black_box(1)));
+    all_dims!(MixedMNoise::new(black_box(1)));
+    all_dims!(MixedTurbulence::<4>::new(black_box(1)));
+    add(MixedTurbulence::<3>::new(2).sample_with_gradient(p).1[3]);
     all_dims!(Simplex::new(black_box(1)));
     add(Simplex::new(2).sample_with_gradient(p).1[3]);
     // Every output and metric (the optimiser cannot tell which), and any jitter.
