@@ -61,6 +61,18 @@ impl Rng {
     }
 }
 
+/// Coordinates every noise must take without a panic and give a documented value for: NaN,
+/// the infinities, the largest magnitudes, a subnormal and negative zero.
+pub const BAD_F32: [f32; 7] = [
+    f32::NAN,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    3e38,
+    -3e38,
+    1e-40,
+    -0.0,
+];
+
 /// The same point in another number type (exact for points from [`Rng::exact_point`]).
 pub fn to_f32<const D: usize>(p: [I16F16; D]) -> [f32; D] {
     p.map(|x| x.to_num::<f32>())
