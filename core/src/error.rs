@@ -91,6 +91,9 @@ pub enum Error {
     Direction,
     /// A Gabor magnitude `K` that is not finite or beyond ±1024.
     Magnitude(f32),
+    /// A domain-warp amplitude that is not finite or beyond ±1024 (see
+    /// [`Warp::new`](crate::vector::Warp::new)).
+    WarpAmplitude(f32),
     /// A cellular noise jitter that is not in `[0, 1]` (see
     /// [`Cellular::with_jitter`](crate::cellular::Cellular::with_jitter)).
     Jitter(f32),
@@ -220,6 +223,11 @@ impl fmt::Display for Error {
                 f,
                 "Gabor magnitude {} must be finite and within ±1024",
                 Shortest(*k)
+            ),
+            Error::WarpAmplitude(a) => write!(
+                f,
+                "warp amplitude {} must be finite and within ±1024",
+                Shortest(*a)
             ),
             Error::Jitter(j) => write!(f, "cellular jitter {} must be in [0, 1]", Shortest(*j)),
             Error::NotCellular(noise) => write!(

@@ -122,7 +122,7 @@ pub mod prelude {
         Perlin, TabledPerlin, ValueNoise, WhiteNoise,
     };
     pub use crate::simplex::Simplex;
-    pub use crate::vector::{Curl2, Curl3, VectorNoise};
+    pub use crate::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{
         FilteredNoise, I16F16, Noise, NoiseGradient, ProjectedNoise, ProjectedNoiseGradient, Real,

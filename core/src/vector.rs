@@ -1,5 +1,6 @@
 //! Vector noise: curl noise (Bridson, Hourihan and Nordenstam, "Curl-Noise for Procedural
-//! Fluid Flow", SIGGRAPH 2007, §2–§3).
+//! Fluid Flow", SIGGRAPH 2007, §2–§3), vectors of independent noises, and domain warping by
+//! them (Lewis 1989, "Algorithms for Solid Noise Synthesis", §5.3: stochastic deformation).
 //!
 //! A velocity field that is the curl of a potential has no divergence: particles advected by it
 //! neither bunch up nor thin out, which is what makes it look like incompressible flow. Bridson
@@ -32,7 +33,7 @@
 //! assert!(w.iter().all(|c| c.is_finite()));
 //! ```
 
-use crate::{NoiseGradient, Real};
+use crate::{Error, I16F16, Noise, NoiseGradient, Real};
 
 /// A noise whose value at a point is a vector of `D` components.
 pub trait VectorNoise<R: Real, const D: usize> {
@@ -122,6 +123,184 @@ where
         [curl(g3[1], g2[2]), curl(g1[2], g3[0]), curl(g2[0], g1[1])]
     }
 }
+
+/// A vector noise of `D` independent scalar noises, one per component: Lewis's vector noise
+/// for stochastic deformation ("three independent scalar solid noises form the components of
+/// the vector field", §5.3), or any displacement field.
+///
+/// The components should be uncorrelated, as different seeds of one noise are; one noise in
+/// every component would displace along the diagonal only.
+///
+/// * **Range**: each component within its noise's bound.
+///
+/// ```
+/// use bandnoise::{Noise, lattice::Perlin, vector::{Components, VectorNoise}};
+///
+/// let v = Components::new([Perlin::new(1), Perlin::new(2)]);
+/// let [a, b]: [f32; 2] = v.sample_vector([0.3, 4.7]);
+/// assert_eq!(a, Perlin::new(1).sample([0.3f32, 4.7]));
+/// # let _ = b;
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Components<N, const D: usize> {
+    noises: [N; D],
+}
+
+impl<N, const D: usize> Components<N, D> {
+    /// The vector noise whose component `a` is `noises[a]`.
+    #[must_use]
+    pub const fn new(noises: [N; D]) -> Self {
+        Self { noises }
+    }
+
+    /// The components' noises.
+    #[must_use]
+    pub const fn noises(&self) -> &[N; D] {
+        &self.noises
+    }
+}
+
+impl<R: Real, N: Noise<R, D>, const D: usize> VectorNoise<R, D> for Components<N, D> {
+    #[inline]
+    fn sample_vector(&self, p: [R; D]) -> [R; D] {
+        core::array::from_fn(|a| self.noises[a].sample(p))
+    }
+}
+
+/// Domain warping: `noise(p + amplitude · displacement(p))`, Lewis's stochastic deformation
+/// (§5.3: he perturbs a model's vertices by a vector of independent noises;
+/// [`displace`](Self::displace) is that perturbation) applied to a noise's domain. Any [`VectorNoise`] displaces:
+/// [`Components`] of independent noises (Lewis's), or curl noise ([`Curl2`], [`Curl3`]) for a
+/// warp that neither compresses nor stretches the domain on average.
+///
+/// * **Amplitude**: how far a point moves, in the noise's units, per unit of displacement;
+///   validated finite and within ±1024, exact in floats and rounded once to 2⁻¹⁶ in fixed
+///   point. 0 gives the noise itself.
+/// * **Range**: the noise's: the warp moves points, never values.
+/// * **Fixed point**: the displaced coordinate saturates at I16F16's range.
+/// * **Batches**: point by point (the displacement depends on each point).
+///
+/// ```
+/// use bandnoise::{Noise, lattice::Perlin, simplex::Simplex, vector::{Components, Warp}};
+///
+/// let warp = Components::new([Simplex::new(11), Simplex::new(12)]);
+/// let marble = Warp::new(Perlin::new(1), warp, 0.8).unwrap();
+/// let v: f32 = marble.sample([0.3, 4.7]);
+/// assert!(v.abs() <= marble.amplitude_bound::<2>());
+/// assert!(Warp::new(Perlin::new(1), Components::new([Simplex::new(1), Simplex::new(2)]), f32::NAN)
+///     .is_err());
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Warp<N, V> {
+    noise: N,
+    displacement: V,
+    amplitude: f32,
+    amplitude_fixed: I16F16,
+}
+
+impl<N, V> Warp<N, V> {
+    /// The largest amplitude's magnitude.
+    pub const MAX_AMPLITUDE: f32 = 1024.0;
+
+    /// `noise` warped by `amplitude · displacement`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::WarpAmplitude`] unless `amplitude` is finite and `|amplitude| ≤ 1024`.
+    pub fn new(noise: N, displacement: V, amplitude: f32) -> Result<Self, Error> {
+        if !(amplitude.abs() <= Self::MAX_AMPLITUDE) {
+            return Err(Error::WarpAmplitude(amplitude));
+        }
+        Ok(Self {
+            noise,
+            displacement,
+            amplitude,
+            amplitude_fixed: I16F16::from_f32(amplitude),
+        })
+    }
+
+    /// The noise warped.
+    #[must_use]
+    pub const fn noise(&self) -> &N {
+        &self.noise
+    }
+
+    /// The displacement field.
+    #[must_use]
+    pub const fn displacement(&self) -> &V {
+        &self.displacement
+    }
+
+    /// The amplitude.
+    #[must_use]
+    pub const fn amplitude(&self) -> f32 {
+        self.amplitude
+    }
+
+    /// Lewis's stochastic deformation of the point `p`: `p + amplitude · displacement(p)`
+    /// (saturating at I16F16's range), the point the warped noise samples at `p`. For a model,
+    /// deform its vertices.
+    #[inline]
+    #[must_use]
+    pub fn displace<R: Real, const D: usize>(&self, p: [R; D]) -> [R; D]
+    where
+        V: VectorNoise<R, D>,
+    {
+        let amplitude = R::from_setting(self.amplitude, self.amplitude_fixed);
+        let v = self.displacement.sample_vector(p);
+        core::array::from_fn(|a| p[a].saturating_add(amplitude.saturating_mul(v[a])))
+    }
+}
+
+impl<R, N, V, const D: usize> Noise<R, D> for Warp<N, V>
+where
+    R: Real,
+    N: Noise<R, D>,
+    V: VectorNoise<R, D>,
+{
+    #[inline]
+    fn sample(&self, p: [R; D]) -> R {
+        self.noise.sample(self.displace(p))
+    }
+
+    fn amplitude_bound(&self) -> f32 {
+        self.noise.amplitude_bound()
+    }
+}
+
+/// The gradient by the chain rule, where the displacement is [`Components`] of noises with
+/// gradients: `∇(n∘q)(p) = J_qᵀ ∇n(q)` with `J_q = I + amplitude · J_v`, row `a` of `J_v` the
+/// gradient of component `a`. The value is [`sample`](Noise::sample)'s, bit for bit.
+impl<R, N, M, const D: usize> NoiseGradient<R, D> for Warp<N, Components<M, D>>
+where
+    R: Real,
+    N: NoiseGradient<R, D>,
+    M: NoiseGradient<R, D>,
+{
+    fn sample_with_gradient(&self, p: [R; D]) -> (R, [R; D]) {
+        let amplitude = R::from_setting(self.amplitude, self.amplitude_fixed);
+        let components = self
+            .displacement
+            .noises
+            .each_ref()
+            .map(|n| n.sample_with_gradient(p));
+        let q: [R; D] = core::array::from_fn(|a| {
+            p[a].saturating_add(amplitude.saturating_mul(components[a].0))
+        });
+        let (value, g) = self.noise.sample_with_gradient(q);
+        let gradient = core::array::from_fn(|b| {
+            let mut chain = R::ZERO;
+            for (ga, (_, dv)) in g.iter().zip(&components) {
+                chain = chain.saturating_add(ga.saturating_mul(dv[b]));
+            }
+            g[b].saturating_add(amplitude.saturating_mul(chain))
+                .canonical()
+        });
+        (value, gradient)
+    }
+}
+
+crate::noise::inherent_amplitude_bound!(Warp<N, V>, [N, V]);
 
 /// `−x`, total: fixed point's most negative value (which has no negation) gives the largest
 /// value; `-0.0` gives `+0.0`.

@@ -18,7 +18,7 @@ use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
 use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, Spec, SpecNoise};
-use bandnoise::vector::{Curl2, Curl3, VectorNoise};
+use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::Distribution;
 use bandnoise::{I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
@@ -190,6 +190,22 @@ fn mixed(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
     assert_eq!(a.to_bits(), b.to_bits(), "turbulence {floats:?}");
 }
 
+/// Perlin noise warped by simplex noise with an amplitude from the input's bits: refused unless
+/// finite and within ±1024, otherwise within Perlin's bound with a finite gradient.
+fn warp(seed: u32, amplitude: f32, floats: [f32; 4], fixed: [I16F16; 4]) {
+    let field = Components::new([Simplex::new(seed ^ 3), Simplex::new(seed ^ 4)]);
+    let Ok(w) = Warp::new(Perlin::new(seed), field, amplitude) else {
+        assert!(!(amplitude.abs() <= 1024.0), "{amplitude} refused");
+        return;
+    };
+    let bound = w.amplitude_bound::<2>();
+    let v: f32 = w.sample([floats[0], floats[1]]);
+    let (_, g) = w.sample_with_gradient([floats[0], floats[1]]);
+    assert!(v.is_finite() && v.abs() <= bound && g.iter().all(|c| c.is_finite()));
+    let q: I16F16 = w.sample([fixed[0], fixed[1]]);
+    assert!(q.to_num::<f32>().abs() <= bound, "{fixed:?}: {q}");
+}
+
 /// Curl noise over simplex noise (2D) and three Perlin noises (3D): finite, and in fixed
 /// point bounded by the potentials' gradients (a few units per cell).
 fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
@@ -245,6 +261,7 @@ fuzz_target!(|input: Input| {
     if base == Base::Simplex {
         assert!(spec.with_period(&input.periods).is_err());
         curl(input.seed, floats, fixed);
+        warp(input.seed, f32::from_bits(input.periods[1]), floats, fixed);
     } else if base == Base::Cellular || values {
         assert!(spec.with_period(&input.periods).is_err());
     } else {

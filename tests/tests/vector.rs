@@ -150,3 +150,86 @@ fn total_on_bad_input() {
         let _: [I16F16; 3] = flow3.sample_vector([x, I16F16::MIN, x]);
     }
 }
+
+/// Domain warping (Lewis §5.3): the warped noise is the noise at the displaced point, which is
+/// `p + amplitude · v(p)` (an independent f64 computation); amplitude 0 is the noise itself;
+/// values stay within the noise's bound; the chain-rule gradient matches central differences;
+/// fixed point follows `f32`; bad amplitudes are refused and bad coordinates give a value.
+#[test]
+fn warp() {
+    use bandnoise::vector::{Components, Warp};
+    use bandnoise::{Error, Noise};
+    let mut rng = Rng::from_env(23);
+    let field = Components::new([Simplex::new(11), Simplex::new(12), Simplex::new(13)]);
+    let warp = Warp::new(Perlin::new(1), field.clone(), 0.8).unwrap();
+    let still = Warp::new(Perlin::new(1), field.clone(), 0.0).unwrap();
+    for _ in 0..20_000 {
+        let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0));
+        let v = [11, 12, 13].map(|s| Simplex::new(s).sample(p));
+        // The amplitude is the f32 setting, exactly.
+        let q: [f64; 3] = core::array::from_fn(|a| p[a] + f64::from(0.8f32) * v[a]);
+        assert_eq!(warp.displace(p), q);
+        let w: f64 = warp.sample(p);
+        assert_eq!(w.to_bits(), Perlin::new(1).sample(q).to_bits());
+        assert!(w.abs() <= f64::from(warp.amplitude_bound::<3>()));
+        let f = p.map(|x| x as f32);
+        let s: f32 = still.sample(f);
+        assert_eq!(s.to_bits(), Perlin::new(1).sample(f).to_bits());
+    }
+    // The warp moves the noise: decorrelated from the unwarped noise at amplitude 2.
+    let strong = Warp::new(Perlin::new(1), field.clone(), 2.0).unwrap();
+    let (a, b): (Vec<f64>, Vec<f64>) = (0..20_000)
+        .map(|_| {
+            let p: [f64; 3] = core::array::from_fn(|_| rng.f64_in(-100.0, 100.0));
+            (strong.sample(p), Perlin::new(1).sample(p))
+        })
+        .unzip();
+    let r = bandnoise_tests::correlation(&a, &b);
+    assert!(r.abs() < 0.2, "correlation with the unwarped noise {r}");
+    // Gradients: the chain rule through the field's Jacobian.
+    let (err, largest) =
+        bandnoise_tests::agree::gradient_error::<_, 3>(&warp, 2_000, 50.0, 1e-6, &mut rng);
+    assert!(err < 1e-5 * largest.max(1.0), "3D: {err} of {largest}");
+    let flat = Warp::new(
+        Simplex::new(3),
+        Components::new([Perlin::new(4), Perlin::new(5)]),
+        1.5,
+    )
+    .unwrap();
+    let (err, largest) =
+        bandnoise_tests::agree::gradient_error::<_, 2>(&flat, 2_000, 50.0, 1e-6, &mut rng);
+    assert!(err < 1e-5 * largest.max(1.0), "2D: {err} of {largest}");
+    // Fixed point follows f32: the displaced points differ by amplitude × the field's error,
+    // which the noise's slope (below 4 per cell) turns into at most a few 10⁻³.
+    let mut worst = 0.0f32;
+    for _ in 0..20_000 {
+        let q: [I16F16; 3] = rng.exact_point(200);
+        let x: I16F16 = warp.sample(q);
+        let y: f32 = warp.sample(q.map(|c| c.to_num::<f32>()));
+        worst = worst.max((x.to_num::<f32>() - y).abs());
+    }
+    assert!(worst < 0.01, "fixed point vs f32: {worst}");
+    // Bad amplitudes are refused; bad coordinates sample somewhere, within the bound.
+    for a in [f32::NAN, f32::INFINITY, -1024.5, 2048.0] {
+        let e = Warp::new(Perlin::new(1), field.clone(), a).unwrap_err();
+        assert!(matches!(e, Error::WarpAmplitude(_)), "{a}: {e}");
+    }
+    assert!(Warp::new(Perlin::new(1), field.clone(), -1024.0).is_ok());
+    let far = Warp::new(Perlin::new(1), field, 1024.0).unwrap();
+    for x in bandnoise_tests::BAD_F32 {
+        for p in [[x, 0.5, 0.25], [0.5, x, x]] {
+            let v: f32 = far.sample(p);
+            assert!(
+                v.is_finite() && v.abs() <= far.amplitude_bound::<3>(),
+                "{p:?}"
+            );
+            let (_, g) = far.sample_with_gradient(p);
+            assert!(g.iter().all(|c| c.is_finite()), "{p:?}");
+        }
+    }
+    for x in [I16F16::MAX, I16F16::MIN] {
+        let v: I16F16 = far.sample([x, x, I16F16::ZERO]);
+        assert!(v.to_num::<f32>().abs() <= far.amplitude_bound::<3>());
+        let _ = far.sample_with_gradient([x, I16F16::MIN, x]);
+    }
+}

@@ -1,5 +1,5 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, white and cubic value noise 1D–4D, curl noise, fractal sums, wavelet bands,
+//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
 //! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
 //! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
 //! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
@@ -23,7 +23,7 @@ use bandnoise::lattice::{
 };
 use bandnoise::levels::Levels;
 use bandnoise::simplex::Simplex;
-use bandnoise::vector::{Curl2, Curl3, VectorNoise};
+use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
 };
@@ -78,6 +78,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(Curl2::new(Simplex::new(black_box(2))).sample_vector([p[0], p[1]])[1]);
     let flow = Curl3::new(Perlin::new(black_box(1)), Simplex::new(2), CNoise::new(3));
     add(flow.sample_vector([p[0], p[1], p[2]])[2]);
+    let field = Components::new([Simplex::new(black_box(4)), Simplex::new(5), Simplex::new(6)]);
+    if let Ok(warp) = Warp::new(Perlin::new(black_box(1)), field, black_box(3.5)) {
+        add(warp.sample([p[0], p[1], p[2]]));
+        add(warp.sample_with_gradient([p[0], p[1], p[2]]).1[1]);
+        add(warp.displace([p[0], p[1], p[2]])[0]);
+    }
     add(Perlin::new(2).sample_with_gradient([p[0], p[1], p[2]]).0);
     add(MNoise::<61>::new(2).sample_with_gradient([p[0], p[1]]).1[1]);
     let kind = black_box(Kind::Ridged);
