@@ -208,7 +208,7 @@ impl<N, V> Warp<N, V> {
     ///
     /// [`Error::WarpAmplitude`] unless `amplitude` is finite and `|amplitude| ≤ 1024`.
     pub fn new(noise: N, displacement: V, amplitude: f32) -> Result<Self, Error> {
-        if !(amplitude.abs() <= Self::MAX_AMPLITUDE) {
+        if amplitude.is_nan() || amplitude.abs() > Self::MAX_AMPLITUDE {
             return Err(Error::WarpAmplitude(amplitude));
         }
         Ok(Self {
