@@ -16,10 +16,10 @@ use bandnoise::cellular::{Metric, Output};
 use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
-use bandnoise::lattice::{Perlin, TabledPerlin};
-use bandnoise::simplex::Simplex;
+use bandnoise::lattice::{MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
+use bandnoise::simplex::{Flow, Simplex};
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
-use bandnoise::vector::{Curl2, Curl3, VectorNoise};
+use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
 use bandnoise::wiener::Covariance;
 use bandnoise::{
@@ -283,7 +283,7 @@ const OTHER: [&str; 12] = [
     "exp and cos",
     "tabled perlin 2D",
     "tabled perlin 3D",
-    "simplex gradients and curl",
+    "simplex gradients, curl, flow, warp, mixed mnoise",
 ];
 
 /// Gabor surface noise (isotropic: each impulse's direction turned into the plane) and Gabor
@@ -406,16 +406,31 @@ fn all<R: Bits>(out: &mut [u32]) {
     push(vector_checksum::<R>());
 }
 
-/// Simplex noise's gradients (2D–4D, each value and slope) and curl noise (2D over simplex
-/// noise, 3D over three Perlin noises). Out of line, for the Cortex-M0's stack.
+/// Simplex noise's gradients (2D–4D, each value and slope), curl noise (2D over simplex
+/// noise, 3D over three Perlin noises), flow noise at an angle (value and slope), Perlin noise
+/// warped by two simplex noises (value and slope), and mNoise from Olano's table (3D, 4D) and
+/// its 4-octave turbulence. Out of line, for the Cortex-M0's stack.
 #[inline(never)]
 fn vector_checksum<R: Bits>() -> u32 {
     let mut f = Fnv::new();
     let simplex = Simplex::new(3);
     let flow = Curl2::new(simplex.clone());
     let flow3 = Curl3::new(Perlin::new(1), Perlin::new(2), Perlin::new(3));
+    let turning = Flow::new(3).with_angle(0.3).unwrap_or_default();
+    let field = Components::new([Simplex::new(4), Simplex::new(5)]);
+    let warp = Warp::new(Perlin::new(1), field, 1.5).ok();
+    let (mixed, turbulence) = (MixedMNoise::new(2), MixedTurbulence::<4>::new(2));
     for i in 0..POINTS / 4 {
         let p = point::<R, 4>(i, 100);
+        let (v, g) = turning.sample_with_gradient([p[0], p[1]]);
+        g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        if let Some(w) = &warp {
+            let (v, g) = w.sample_with_gradient([p[0], p[1]]);
+            g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        }
+        f.add(mixed.sample([p[0], p[1], p[2]]).bits());
+        f.add(mixed.sample(p).bits());
+        f.add(turbulence.sample([p[0], p[1], p[2]]).bits());
         let (v, g) = simplex.sample_with_gradient([p[0], p[1]]);
         g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
         let (v, g) = simplex.sample_with_gradient([p[0], p[1], p[2]]);

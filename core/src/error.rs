@@ -94,6 +94,9 @@ pub enum Error {
     /// A domain-warp amplitude that is not finite or beyond ±1024 (see
     /// [`Warp::new`](crate::vector::Warp::new)).
     WarpAmplitude(f32),
+    /// A flow-noise angle that is not finite (see
+    /// [`Flow::with_angle`](crate::simplex::Flow::with_angle)).
+    FlowAngle(f32),
     /// A cellular noise jitter that is not in `[0, 1]` (see
     /// [`Cellular::with_jitter`](crate::cellular::Cellular::with_jitter)).
     Jitter(f32),
@@ -229,6 +232,7 @@ impl fmt::Display for Error {
                 "warp amplitude {} must be finite and within ±1024",
                 Shortest(*a)
             ),
+            Error::FlowAngle(a) => write!(f, "flow angle {} must be finite", Shortest(*a)),
             Error::Jitter(j) => write!(f, "cellular jitter {} must be in [0, 1]", Shortest(*j)),
             Error::NotCellular(noise) => write!(
                 f,

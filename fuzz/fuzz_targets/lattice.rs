@@ -16,7 +16,7 @@ use bandnoise::batch::LANES;
 use bandnoise::cellular::{Metric, Output};
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
-use bandnoise::simplex::Simplex;
+use bandnoise::simplex::{Flow, Simplex};
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::Distribution;
@@ -195,7 +195,10 @@ fn mixed(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
 fn warp(seed: u32, amplitude: f32, floats: [f32; 4], fixed: [I16F16; 4]) {
     let field = Components::new([Simplex::new(seed ^ 3), Simplex::new(seed ^ 4)]);
     let Ok(w) = Warp::new(Perlin::new(seed), field, amplitude) else {
-        assert!(amplitude.is_nan() || amplitude.abs() > 1024.0, "{amplitude} refused");
+        assert!(
+            amplitude.is_nan() || amplitude.abs() > 1024.0,
+            "{amplitude} refused"
+        );
         return;
     };
     let bound = w.amplitude_bound::<2>();
@@ -204,6 +207,22 @@ fn warp(seed: u32, amplitude: f32, floats: [f32; 4], fixed: [I16F16; 4]) {
     assert!(v.is_finite() && v.abs() <= bound && g.iter().all(|c| c.is_finite()));
     let q: I16F16 = w.sample([fixed[0], fixed[1]]);
     assert!(q.to_num::<f32>().abs() <= bound, "{fixed:?}: {q}");
+}
+
+/// Flow noise at an angle from the input's bits: refused unless finite, otherwise within its
+/// bound with a finite gradient, fixed point near f32 where the input is exact in both, and
+/// the batch path equal to the point path.
+fn flow(seed: u32, angle: f32, floats: [f32; 4], fixed: [I16F16; 4], exact: f32) {
+    let Ok(f) = Flow::new(seed).with_angle(angle) else {
+        assert!(!angle.is_finite(), "{angle} refused");
+        return;
+    };
+    dim::<2, _>(&f, floats, fixed, exact);
+    let (v, g) = f.sample_with_gradient([floats[0], floats[1]]);
+    assert!(
+        v.is_finite() && g.iter().all(|c| c.is_finite()),
+        "{floats:?}"
+    );
 }
 
 /// Curl noise over simplex noise (2D) and three Perlin noises (3D): finite, and in fixed
@@ -262,6 +281,8 @@ fuzz_target!(|input: Input| {
         assert!(spec.with_period(&input.periods).is_err());
         curl(input.seed, floats, fixed);
         warp(input.seed, f32::from_bits(input.periods[1]), floats, fixed);
+        let angle = f32::from_bits(input.periods[2]);
+        flow(input.seed, angle, floats, fixed, tolerance);
     } else if base == Base::Cellular || values {
         assert!(spec.with_period(&input.periods).is_err());
     } else {

@@ -202,6 +202,7 @@ fn run(o: &Options) -> Result<(), String> {
     render_wiener_covariances(o)?;
     render_gabor_variants(o)?;
     render_curl(o)?;
+    render_flow_and_warp(o)?;
     render_cellular_variants(o)?;
     render_wavelet_filtering(o)
 }
@@ -249,6 +250,28 @@ fn render_curl(o: &Options) -> Result<(), String> {
     let flow = Curl2::new(Simplex::new(o.seed));
     render_with(o, "curl-2d-x", 3.0, 1.0, |p, _| flow.sample_vector(p)[0])?;
     render_with(o, "curl-2d-y", 3.0, 1.0, |p, _| flow.sample_vector(p)[1])
+}
+
+/// Flow noise (Perlin and Neyret 2001) at three angles of its rotating gradients (the
+/// features swirl in place), domain warping (Lewis's stochastic deformation) of Perlin noise
+/// by two simplex noises, and Olano's 4-octave turbulence of mNoise (3D, the slice z = 0.37).
+fn render_flow_and_warp(o: &Options) -> Result<(), String> {
+    for (name, angle) in [("0", 0.0), ("0.125", 0.125), ("0.25", 0.25)] {
+        let flow = Flow::new(o.seed)
+            .with_angle(angle)
+            .map_err(|e| e.to_string())?;
+        render_with(o, &format!("flow-2d-angle-{name}"), 1.0, 1.0, |p, _| {
+            flow.sample(p)
+        })?;
+    }
+    let field = Components::new([Simplex::new(o.seed ^ 1), Simplex::new(o.seed ^ 2)]);
+    let warp = Warp::new(Perlin::new(o.seed), field, 1.0).map_err(|e| e.to_string())?;
+    render_with(o, "warp-perlin-2d", 1.0, 1.0, |p, _| warp.sample(p))?;
+    let turbulence = MixedTurbulence::<4>::new(o.seed);
+    // |n| ≥ 0 with mean about 0.35: map [0, 1.2] to black..white.
+    render_with(o, "mnoise-turbulence-3d", 0.6, 1.0, |p, _| {
+        turbulence.sample([p[0], p[1], 0.37]) - 0.6
+    })
 }
 
 /// Gabor noise (Lagae et al. 2009) beyond its default (`gabor-2d`: anisotropic along x): the

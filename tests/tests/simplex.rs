@@ -382,3 +382,144 @@ fn total_on_bad_input() {
         assert!(v3.to_num::<f32>().abs() <= bound && v2.to_num::<f32>().abs() <= bound);
     }
 }
+
+/// Flow noise's scale (`406340 · 2⁻¹⁶`): the largest value over points and every choice of
+/// gradient directions, each corner's gradient along its offset (`|d|`), searched as for
+/// simplex noise, is 1.
+#[test]
+fn flow_largest_value_is_one() {
+    let perm = *Permutation::new(0).table();
+    let length = |_: u32, off: &[f64; 4]| (off[0] * off[0] + off[1] * off[1]).sqrt();
+    let peak = |u: [f64; 4]| {
+        let order = if u[0] > u[1] {
+            [0, 1, 2, 3]
+        } else {
+            [1, 0, 2, 3]
+        };
+        reference(2, &perm, [0; 4], u, order, 0.5, &length) * FLOW_SCALE / 65536.0
+    };
+    let n = 256;
+    let (mut best, mut at) = (0.0f64, [0.0; 4]);
+    for i in 0..n * n {
+        let u = [
+            (i % n) as f64 / n as f64,
+            (i / n) as f64 / n as f64,
+            0.0,
+            0.0,
+        ];
+        let v = peak(u);
+        if v > best {
+            (best, at) = (v, u);
+        }
+    }
+    let mut step = 1.0 / n as f64;
+    while step > 1e-10 {
+        let mut moved = false;
+        for a in 0..2 {
+            for s in [-step, step] {
+                let mut u = at;
+                u[a] = (u[a] + s).clamp(0.0, 1.0 - 1e-12);
+                let v = peak(u);
+                if v > best {
+                    (best, at, moved) = (v, u, true);
+                }
+            }
+        }
+        if !moved {
+            step *= 0.5;
+        }
+    }
+    println!(
+        "flow: largest value {best:.6} at skewed fractions {:?}",
+        &at[..2]
+    );
+    assert!((0.99999..=1.0).contains(&best), "{best}");
+}
+
+const FLOW_SCALE: f64 = 406_340.0;
+
+/// Flow noise against the reference with gradients `(cos 2π(h/256 + α), sin 2π(h/256 + α))`
+/// (bandnoise's cosine is a table, within 10⁻⁷ here); a full turn is the same noise and half
+/// a turn its negation (every gradient reversed); turning decorrelates the noise while keeping
+/// its variance (Perlin and Neyret's point); the gradient, fixed point, batches, bad input.
+#[test]
+fn flow_noise() {
+    use bandnoise::simplex::Flow;
+    let mut rng = Rng::from_env(64);
+    for (seed, angle) in [(0u32, 0.0f32), (1, 0.3), (77, -2.85)] {
+        let flow = Flow::new(seed).with_angle(angle).unwrap();
+        let alpha = f64::from(flow.angle());
+        let perm = *Permutation::new(seed).table();
+        let turned = move |h: u32, off: &[f64; 4]| {
+            let t = core::f64::consts::TAU * (h as f64 / 256.0 + alpha);
+            t.cos() * off[0] + t.sin() * off[1]
+        };
+        let mut worst = 0.0f64;
+        for _ in 0..20_000 {
+            let p = [rng.f64_in(-300.0, 300.0), rng.f64_in(-300.0, 300.0)];
+            let (cell, u, order) = skewed(2, &p);
+            let want = reference(2, &perm, cell, u, order, 0.5, &turned) * FLOW_SCALE / 65536.0;
+            let v: f64 = flow.sample(p);
+            worst = worst.max((v - want).abs());
+        }
+        println!("flow seed {seed} angle {angle}: largest |bandnoise − reference| {worst:.1e}");
+        assert!(worst < 1e-7, "seed {seed}: {worst}");
+        let full = flow.clone().with_angle(angle + 1.0).unwrap();
+        let half = flow.clone().with_angle(angle + 0.5).unwrap();
+        for _ in 0..2_000 {
+            let p = [
+                rng.f64_in(-300.0, 300.0) as f32,
+                rng.f64_in(-300.0, 300.0) as f32,
+            ];
+            let v: f32 = flow.sample(p);
+            let w: f32 = full.sample(p);
+            assert!((v - w).abs() < 1e-6, "{p:?}: a full turn {v} {w}");
+            let h: f32 = half.sample(p);
+            assert!((v + h).abs() < 1e-5, "{p:?}: half a turn {v} {h}");
+        }
+    }
+    // Turning keeps the variance and decorrelates: a quarter turn apart, the noises are
+    // uncorrelated (each gradient orthogonal to its former self).
+    let flow = Flow::new(5);
+    let quarter = flow.clone().with_angle(0.25).unwrap();
+    let tenth = flow.clone().with_angle(0.1).unwrap();
+    let points: Vec<[f64; 2]> = (0..200_000)
+        .map(|_| [rng.f64_in(-1000.0, 1000.0), rng.f64_in(-1000.0, 1000.0)])
+        .collect();
+    let values = |n: &Flow| -> Vec<f64> { points.iter().map(|&p| n.sample(p)).collect() };
+    let (a, b, c) = (values(&flow), values(&quarter), values(&tenth));
+    let (_, va) = mean_variance(&a);
+    let (_, vb) = mean_variance(&b);
+    let (_, vc) = mean_variance(&c);
+    let r = bandnoise_tests::correlation(&a, &b);
+    let r10 = bandnoise_tests::correlation(&a, &c);
+    println!(
+        "flow variance {va:.4} / {vb:.4} / {vc:.4}; correlation a quarter turn apart {r:.4}, a tenth {r10:.4}"
+    );
+    assert!((vb / va - 1.0).abs() < 0.03 && (vc / va - 1.0).abs() < 0.03);
+    assert!(r.abs() < 0.01, "{r}");
+    // cos 2π·0.1 = 0.81: the noises a tenth of a turn apart correlate as their gradients do.
+    assert!(
+        (r10 - (core::f64::consts::TAU * 0.1).cos()).abs() < 0.02,
+        "{r10}"
+    );
+    let (err, largest) = agree::gradient_error::<_, 2>(&tenth, 5_000, 100.0, 1e-6, &mut rng);
+    assert!(err < 1e-6 * largest.max(1.0), "{err} of {largest}");
+    agree::batches_match::<_, 2>(&tenth, &[0.0737, 1.3], &mut rng);
+    let worst = agree::fixed_vs_f32::<_, 2>(&tenth, 100_000, 256, &mut rng);
+    println!("flow: fixed point within {worst:.1e} of f32");
+    assert!(worst < 1e-3, "{worst}");
+    for a in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+        let e = Flow::new(1).with_angle(a).unwrap_err();
+        assert!(matches!(e, bandnoise::Error::FlowAngle(b) if b.to_bits() == a.to_bits()));
+    }
+    for x in bandnoise_tests::BAD_F32 {
+        for p in [[x, 0.5], [0.5, x], [x, x]] {
+            let v: f32 = tenth.sample(p);
+            let (_, g) = tenth.sample_with_gradient(p);
+            assert!(v.abs() <= tenth.amplitude_bound::<2>() && g.iter().all(|c| c.is_finite()));
+        }
+    }
+    let q: I16F16 = tenth.sample([I16F16::MAX, I16F16::MIN]);
+    assert!(q.to_num::<f32>().abs() <= tenth.amplitude_bound::<2>());
+}

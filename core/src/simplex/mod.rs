@@ -55,6 +55,10 @@
 //! # let _ = g;
 //! ```
 
+mod flow;
+
+pub use flow::Flow;
+
 use crate::Real;
 use crate::batch::LANES;
 use crate::hash::chain::{ChainHash, Doubled};
@@ -100,6 +104,34 @@ impl Simplex {
 impl Default for Simplex {
     fn default() -> Self {
         Self::new(0)
+    }
+}
+
+/// Where the corners of a simplex noise take their gradients from their hashes.
+pub(crate) trait Gradients<R: Real, const D: usize> {
+    /// The gradient of the corner whose hash is `h` (below 256).
+    fn gradient(&self, h: u32) -> [R; D];
+    /// `d · g` for an offset component `d` (below 2) and a gradient component `g`.
+    fn times(d: R, g: R) -> R;
+}
+
+/// Perlin's gradient sets (module docs): components are exact units in 2D–4D, so a product is
+/// an addition or a multiply that reads the unit; slopes in 1D.
+impl<R: Real, const D: usize> Gradients<R, D> for Perlin
+where
+    Perlin: Lattice<D>,
+{
+    #[inline(always)]
+    fn gradient(&self, h: u32) -> [R; D] {
+        Lattice::<D>::gradient(self, h)
+    }
+    #[inline(always)]
+    fn times(d: R, g: R) -> R {
+        if D == 1 {
+            d.mul_fraction(g)
+        } else {
+            d.mul_unit(g)
+        }
     }
 }
 
@@ -199,13 +231,16 @@ const fn inverse_radius_shift(dims: usize) -> u32 {
     clippy::needless_range_loop,
     reason = "each step loops over the lanes innermost, indexing the axis arrays, so that it vectorises"
 )]
-fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
-    noise: &Simplex,
+pub(crate) fn simplex<R, G, const D: usize, const N: usize, const GRADIENT: bool>(
+    chain: &Doubled,
+    gradients: &G,
+    scale: i32,
     p: &[[R; N]; D],
     value: &mut [R; N],
     gradient: &mut [[R; N]; D],
 ) where
-    Perlin: Lattice<D>,
+    R: Real,
+    G: Gradients<R, D>,
 {
     let mut cell = [[0i32; N]; D];
     let mut offset = [[R::ZERO; N]; D];
@@ -273,28 +308,18 @@ fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
                 let step = u32::from(rank[a][l] + j as u32 >= D as u32);
                 // Reduced here rather than kept in an array: the bound `≤ 256` stays visible,
                 // so the doubled table's lookup needs no bounds check.
-                h = noise
-                    .perlin
-                    .chain()
-                    .step(h, Doubled::reduce(cell[a][l]) + step);
+                h = chain.step(h, Doubled::reduce(cell[a][l]) + step);
             }
-            let row = Lattice::<D>::gradient::<R>(&noise.perlin, h);
+            let row = gradients.gradient(h);
             for a in 0..D {
                 g[a][l] = row[a];
             }
         }
         // ... then the kernel over all lanes at once.
         for l in 0..N {
-            // Gradient components are exact units in 2D–4D (additions, or a multiply that
-            // reads the unit), slopes in 1D.
             let mut dot = R::ZERO;
             for a in 0..D {
-                let term = if D == 1 {
-                    d[a][l].mul_fraction(g[a][l])
-                } else {
-                    d[a][l].mul_unit(g[a][l])
-                };
-                dot = dot + term;
+                dot = dot + G::times(d[a][l], g[a][l]);
             }
             let tau2 = tau[l].mul_fraction(tau[l]);
             let tau4 = tau2.mul_fraction(tau2);
@@ -317,7 +342,7 @@ fn simplex<R: Real, const D: usize, const N: usize, const GRADIENT: bool>(
             }
         }
     }
-    let scale = R::from_ratio(SCALE[D], 16);
+    let scale = R::from_ratio(scale, 16);
     for l in 0..N {
         // |value| ≤ 1/scale, so the product is at most 1.
         value[l] = value[l].mul_fraction(scale).canonical();
@@ -336,7 +361,8 @@ macro_rules! simplex_impls {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
                 let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
-                simplex::<R, $d, 1, false>(self, &p.map(|x| [x]), &mut value, &mut gradient);
+                let p = p.map(|x| [x]);
+                simplex::<R, _, $d, 1, false>(self.perlin.chain(), &self.perlin, SCALE[$d], &p, &mut value, &mut gradient);
                 value[0]
             }
             fn amplitude_bound(&self) -> f32 {
@@ -344,7 +370,7 @@ macro_rules! simplex_impls {
             }
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
                 let mut gradient = [[R::ZERO; LANES]; $d];
-                simplex::<R, $d, LANES, false>(self, p, out, &mut gradient);
+                simplex::<R, _, $d, LANES, false>(self.perlin.chain(), &self.perlin, SCALE[$d], p, out, &mut gradient);
             }
         }
 
@@ -352,7 +378,8 @@ macro_rules! simplex_impls {
             #[inline]
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
                 let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
-                simplex::<R, $d, 1, true>(self, &p.map(|x| [x]), &mut value, &mut gradient);
+                let p = p.map(|x| [x]);
+                simplex::<R, _, $d, 1, true>(self.perlin.chain(), &self.perlin, SCALE[$d], &p, &mut value, &mut gradient);
                 (value[0], gradient.map(|g| g[0]))
             }
         }
