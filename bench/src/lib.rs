@@ -15,7 +15,7 @@ use bandnoise::cellular::Cellular;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise};
-use bandnoise::simplex::Simplex;
+use bandnoise::simplex::{Flow, Simplex};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
 
@@ -61,7 +61,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 26] = [
+pub const FUNCTIONS: [&str; 27] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -86,6 +86,7 @@ pub const FUNCTIONS: [&str; 26] = [
     "sparse-3d",
     "simplex-2d",
     "simplex-3d",
+    "flow-2d",
     "cellular-2d",
     "cellular-3d",
 ];
@@ -267,6 +268,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("sparse-2d", "bandnoise-batch") => l.batch::<_, 2>(SparseConvolution::<2>::new(0)),
         ("sparse-3d", "bandnoise") => l.point::<_, 3>(sparse3()),
         ("sparse-3d", "bandnoise-batch") => l.batch::<_, 3>(sparse3()),
+        ("flow-2d", "bandnoise") => l.point::<_, 2>(Flow::new(0).with_angle(0.3).unwrap()),
+        ("flow-2d", "bandnoise-batch") => l.batch::<_, 2>(Flow::new(0).with_angle(0.3).unwrap()),
         ("simplex-2d", "bandnoise") => l.point::<_, 2>(Simplex::new(0)),
         ("simplex-2d", "bandnoise-batch") => l.batch::<_, 2>(Simplex::new(0)),
         ("simplex-3d", "bandnoise") => l.point::<_, 3>(Simplex::new(0)),
@@ -427,6 +430,7 @@ pub fn peer_function(function: &str) -> &str {
     match function {
         "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "sparse-2d" => "perlin-2d",
         "mnoise-4d" | "mixed-mnoise-4d" => "perlin-4d",
+        "flow-2d" => "simplex-2d",
         "tabled-perlin-3d"
         | "mnoise-3d"
         | "mixed-mnoise-3d"

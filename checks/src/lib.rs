@@ -17,7 +17,7 @@ use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
 use bandnoise::lattice::{MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
-use bandnoise::simplex::{Flow, Simplex};
+use bandnoise::simplex::{Flow, FlowSum, Simplex};
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
@@ -407,7 +407,8 @@ fn all<R: Bits>(out: &mut [u32]) {
 }
 
 /// Simplex noise's gradients (2D–4D, each value and slope), curl noise (2D over simplex
-/// noise, 3D over three Perlin noises), flow noise at an angle (value and slope), Perlin noise
+/// noise, 3D over three Perlin noises), flow noise at an angle (value and slope) and its
+/// advected fBm, Perlin noise
 /// warped by two simplex noises (value and slope), and mNoise from Olano's table (3D, 4D) and
 /// its 4-octave turbulence. Out of line, for the Cortex-M0's stack.
 #[inline(never)]
@@ -417,6 +418,9 @@ fn vector_checksum<R: Bits>() -> u32 {
     let flow = Curl2::new(simplex.clone());
     let flow3 = Curl3::new(Perlin::new(1), Perlin::new(2), Perlin::new(3));
     let turning = Flow::new(3).with_angle(0.3).unwrap_or_default();
+    let advected = Octaves::new(4, 2.0, 0.5)
+        .ok()
+        .and_then(|o| FlowSum::new(turning.clone(), o).with_advection(0.4).ok());
     let field = Components::new([Simplex::new(4), Simplex::new(5)]);
     let warp = Warp::new(Perlin::new(1), field, 1.5).ok();
     let (mixed, turbulence) = (MixedMNoise::new(2), MixedTurbulence::<4>::new(2));
@@ -424,6 +428,9 @@ fn vector_checksum<R: Bits>() -> u32 {
         let p = point::<R, 4>(i, 100);
         let (v, g) = turning.sample_with_gradient([p[0], p[1]]);
         g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        if let Some(sum) = &advected {
+            f.add(sum.sample([p[0], p[1]]).bits());
+        }
         if let Some(w) = &warp {
             let (v, g) = w.sample_with_gradient([p[0], p[1]]);
             g.iter().chain([&v]).for_each(|x| f.add(x.bits()));

@@ -97,6 +97,9 @@ pub enum Error {
     /// A flow-noise angle that is not finite (see
     /// [`Flow::with_angle`](crate::simplex::Flow::with_angle)).
     FlowAngle(f32),
+    /// A flow fBm's spin not in `[0, 16]` or advection beyond ±16 (see
+    /// [`FlowSum`](crate::simplex::FlowSum)).
+    FlowSetting(f32),
     /// A cellular noise jitter that is not in `[0, 1]` (see
     /// [`Cellular::with_jitter`](crate::cellular::Cellular::with_jitter)).
     Jitter(f32),
@@ -233,6 +236,11 @@ impl fmt::Display for Error {
                 Shortest(*a)
             ),
             Error::FlowAngle(a) => write!(f, "flow angle {} must be finite", Shortest(*a)),
+            Error::FlowSetting(v) => write!(
+                f,
+                "flow spin must be in [0, 16] and advection within ±16, not {}",
+                Shortest(*v)
+            ),
             Error::Jitter(j) => write!(f, "cellular jitter {} must be in [0, 1]", Shortest(*j)),
             Error::NotCellular(noise) => write!(
                 f,

@@ -54,7 +54,7 @@ pub(crate) const fn exp_neg_f64(y: f64) -> f64 {
 
 /// `cos x` for `0 ≤ x ≤ π/2` in `f64`, by its Taylor series (30 terms: far below `f64`'s
 /// precision there).
-const fn cos_f64(x: f64) -> f64 {
+pub(crate) const fn cos_f64(x: f64) -> f64 {
     let mut term = 1.0;
     let mut sum = 1.0;
     let mut k = 1;

@@ -253,7 +253,7 @@ fn render_curl(o: &Options) -> Result<(), String> {
 }
 
 /// Flow noise (Perlin and Neyret 2001) at three angles of its rotating gradients (the
-/// features swirl in place), domain warping (Lewis's stochastic deformation) of Perlin noise
+/// features swirl in place) and its fBm with pseudo-advection, domain warping (Lewis's stochastic deformation) of Perlin noise
 /// by two simplex noises, and Olano's 4-octave turbulence of mNoise (3D, the slice z = 0.37).
 fn render_flow_and_warp(o: &Options) -> Result<(), String> {
     for (name, angle) in [("0", 0.0), ("0.125", 0.125), ("0.25", 0.25)] {
@@ -264,6 +264,11 @@ fn render_flow_and_warp(o: &Options) -> Result<(), String> {
             flow.sample(p)
         })?;
     }
+    let octaves = Octaves::new(5, 2.0, 0.5).map_err(|e| e.to_string())?;
+    let sum = FlowSum::new(Flow::new(o.seed), octaves)
+        .with_advection(0.5)
+        .map_err(|e| e.to_string())?;
+    render_with(o, "flow-fbm-advected-2d", 1.5, 1.0, |p, _| sum.sample(p))?;
     let field = Components::new([Simplex::new(o.seed ^ 1), Simplex::new(o.seed ^ 2)]);
     let warp = Warp::new(Perlin::new(o.seed), field, 1.0).map_err(|e| e.to_string())?;
     render_with(o, "warp-perlin-2d", 1.0, 1.0, |p, _| warp.sample(p))?;

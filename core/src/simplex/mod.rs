@@ -57,7 +57,7 @@
 
 mod flow;
 
-pub use flow::Flow;
+pub use flow::{Flow, FlowSum};
 
 use crate::Real;
 use crate::batch::LANES;

@@ -1,5 +1,5 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, flow noise, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
+//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, flow noise and its fBm, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
 //! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
 //! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
 //! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
@@ -22,7 +22,7 @@ use bandnoise::lattice::{
     Perlin, TabledPerlin, ValueNoise, WhiteNoise,
 };
 use bandnoise::levels::Levels;
-use bandnoise::simplex::{Flow, Simplex};
+use bandnoise::simplex::{Flow, FlowSum, Simplex};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
@@ -64,6 +64,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     if let Ok(flow) = Flow::new(black_box(1)).with_angle(black_box(0.3)) {
         add(flow.sample([p[0], p[1]]));
         add(flow.sample_with_gradient([p[0], p[1]]).1[1]);
+        if let Ok(o) = Octaves::new(black_box(5), black_box(1.9), black_box(0.6)) {
+            let sum = FlowSum::new(flow, o).with_advection(black_box(0.7));
+            if let Ok(sum) = sum.and_then(|s| s.with_spin(black_box(1.5))) {
+                add(sum.sample([p[0], p[1]]));
+            }
+        }
     }
     // Every output and metric (the optimiser cannot tell which), and any jitter.
     let cellular = Cellular::new(black_box(1))
