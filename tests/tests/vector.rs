@@ -185,11 +185,13 @@ fn warp() {
         })
         .unzip();
     let r = bandnoise_tests::correlation(&a, &b);
+    println!("warp: correlation with the unwarped noise {r:.3} (amplitude 2)");
     assert!(r.abs() < 0.2, "correlation with the unwarped noise {r}");
     // Gradients: the chain rule through the field's Jacobian.
     let (err, largest) =
         bandnoise_tests::agree::gradient_error::<_, 3>(&warp, 2_000, 50.0, 1e-6, &mut rng);
-    assert!(err < 1e-5 * largest.max(1.0), "3D: {err} of {largest}");
+    println!("warp: gradient within {err:.1e} of central differences (3D, largest {largest:.2})");
+    assert!(err < 1e-6 * largest.max(1.0), "3D: {err} of {largest}");
     let flat = Warp::new(
         Simplex::new(3),
         Components::new([Perlin::new(4), Perlin::new(5)]),
@@ -198,9 +200,9 @@ fn warp() {
     .unwrap();
     let (err, largest) =
         bandnoise_tests::agree::gradient_error::<_, 2>(&flat, 2_000, 50.0, 1e-6, &mut rng);
-    assert!(err < 1e-5 * largest.max(1.0), "2D: {err} of {largest}");
-    // Fixed point follows f32: the displaced points differ by amplitude × the field's error,
-    // which the noise's slope (below 4 per cell) turns into at most a few 10⁻³.
+    assert!(err < 1e-6 * largest.max(1.0), "2D: {err} of {largest}");
+    // Fixed point follows f32: the displaced points differ by amplitude × the field's error
+    // (simplex noise's, about 4·10⁻⁴), which the noise's slope turns into about 10⁻³.
     let mut worst = 0.0f32;
     for _ in 0..20_000 {
         let q: [I16F16; 3] = rng.exact_point(200);
@@ -208,7 +210,8 @@ fn warp() {
         let y: f32 = warp.sample(q.map(|c| c.to_num::<f32>()));
         worst = worst.max((x.to_num::<f32>() - y).abs());
     }
-    assert!(worst < 0.01, "fixed point vs f32: {worst}");
+    println!("warp: fixed point within {worst:.1e} of f32");
+    assert!(worst < 2e-3, "fixed point vs f32: {worst}");
     // Bad amplitudes are refused; bad coordinates sample somewhere, within the bound.
     for a in [f32::NAN, f32::INFINITY, -1024.5, 2048.0] {
         let e = Warp::new(Perlin::new(1), field.clone(), a).unwrap_err();
