@@ -255,43 +255,49 @@ fn the_largest_value_is_one() {
             order[..d].sort_by(|&x, &y| u[y].total_cmp(&u[x]).then(y.cmp(&x)));
             reference(d, &perm, [0; 4], u, order, radius2(d), &steepest(d)) * SCALE[d] / 65536.0
         };
-        let n: usize = [0, 4096, 256, 40, 16][d];
-        let (mut best, mut at) = (0.0f64, [0.0; 4]);
-        for i in 0..n.pow(d as u32) {
-            let mut rest = i;
-            let mut u = [0.0; 4];
-            for c in u.iter_mut().take(d) {
-                *c = (rest % n) as f64 / n as f64;
-                rest /= n;
-            }
-            let v = peak(u);
-            if v > best {
-                (best, at) = (v, u);
-            }
-        }
-        let mut step = 1.0 / n as f64;
-        while step > 1e-10 {
-            let mut moved = false;
-            for a in 0..d {
-                for s in [-step, step] {
-                    let mut u = at;
-                    u[a] = (u[a] + s).clamp(0.0, 1.0 - 1e-12);
-                    let v = peak(u);
-                    if v > best {
-                        (best, at, moved) = (v, u, true);
-                    }
-                }
-            }
-            if !moved {
-                step *= 0.5;
-            }
-        }
+        let (best, at) = largest(d, [0, 4096, 256, 40, 16][d], peak);
         println!(
             "{d}D: largest value {best:.6} at skewed fractions {:?}",
             &at[..d]
         );
         assert!((0.999..=1.0).contains(&best), "{d}D: {best}");
     }
+}
+
+/// The largest `peak(u)` over skewed fractions `u ∈ [0, 1)^d`, and where: a grid of `n` per
+/// axis, then coordinate ascent from its best point down to steps of 10⁻¹⁰.
+fn largest(d: usize, n: usize, peak: impl Fn([f64; 4]) -> f64) -> (f64, [f64; 4]) {
+    let (mut best, mut at) = (0.0f64, [0.0; 4]);
+    for i in 0..n.pow(d as u32) {
+        let mut rest = i;
+        let mut u = [0.0; 4];
+        for c in u.iter_mut().take(d) {
+            *c = (rest % n) as f64 / n as f64;
+            rest /= n;
+        }
+        let v = peak(u);
+        if v > best {
+            (best, at) = (v, u);
+        }
+    }
+    let mut step = 1.0 / n as f64;
+    while step > 1e-10 {
+        let mut moved = false;
+        for a in 0..d {
+            for s in [-step, step] {
+                let mut u = at;
+                u[a] = (u[a] + s).clamp(0.0, 1.0 - 1e-12);
+                let v = peak(u);
+                if v > best {
+                    (best, at, moved) = (v, u, true);
+                }
+            }
+        }
+        if !moved {
+            step *= 0.5;
+        }
+    }
+    (best, at)
 }
 
 fn statistics<const D: usize>(rng: &mut Rng)
@@ -398,37 +404,7 @@ fn flow_largest_value_is_one() {
         };
         reference(2, &perm, [0; 4], u, order, 0.5, &length) * FLOW_SCALE / 65536.0
     };
-    let n = 256;
-    let (mut best, mut at) = (0.0f64, [0.0; 4]);
-    for i in 0..n * n {
-        let u = [
-            (i % n) as f64 / n as f64,
-            (i / n) as f64 / n as f64,
-            0.0,
-            0.0,
-        ];
-        let v = peak(u);
-        if v > best {
-            (best, at) = (v, u);
-        }
-    }
-    let mut step = 1.0 / n as f64;
-    while step > 1e-10 {
-        let mut moved = false;
-        for a in 0..2 {
-            for s in [-step, step] {
-                let mut u = at;
-                u[a] = (u[a] + s).clamp(0.0, 1.0 - 1e-12);
-                let v = peak(u);
-                if v > best {
-                    (best, at, moved) = (v, u, true);
-                }
-            }
-        }
-        if !moved {
-            step *= 0.5;
-        }
-    }
+    let (best, at) = largest(2, 256, peak);
     println!(
         "flow: largest value {best:.6} at skewed fractions {:?}",
         &at[..2]

@@ -146,10 +146,15 @@ fn turn_of(turns: f32) -> [(f32, I16F16); 2] {
     [cos, sin].map(|v| (v, I16F16::from_f32(v)))
 }
 
-impl<R: Real> Gradients<R, 2> for Flow {
+/// Gradients turned by one angle (`turn`: its cosine and sine).
+struct Turned<'a> {
+    turn: &'a [(f32, I16F16); 2],
+}
+
+impl<R: Real> Gradients<R, 2> for Turned<'_> {
     #[inline(always)]
     fn gradient(&self, h: u32) -> [R; 2] {
-        turned(h, &self.turn)
+        turned(h, self.turn)
     }
     #[inline(always)]
     fn times(d: R, g: R) -> R {
@@ -158,19 +163,27 @@ impl<R: Real> Gradients<R, 2> for Flow {
     }
 }
 
+impl Flow {
+    /// The simplex body at `N` points with this noise's hash and the gradients turned by
+    /// `turn` (its own angle's, or a [`FlowSum`] octave's).
+    #[inline(always)]
+    fn body<R: Real, const N: usize, const GRADIENT: bool>(
+        &self,
+        turn: &[(f32, I16F16); 2],
+        p: &[[R; N]; 2],
+        value: &mut [R; N],
+        gradient: &mut [[R; N]; 2],
+    ) {
+        let gradients = Turned { turn };
+        simplex::<R, _, 2, N, GRADIENT>(self.perlin.chain(), &gradients, SCALE, p, value, gradient);
+    }
+}
+
 impl<R: Real> crate::Noise<R, 2> for Flow {
     #[inline]
     fn sample(&self, p: [R; 2]) -> R {
         let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; 2]);
-        let p = p.map(|x| [x]);
-        simplex::<R, _, 2, 1, false>(
-            self.perlin.chain(),
-            self,
-            SCALE,
-            &p,
-            &mut value,
-            &mut gradient,
-        );
+        self.body::<R, 1, false>(&self.turn, &p.map(|x| [x]), &mut value, &mut gradient);
         value[0]
     }
     fn amplitude_bound(&self) -> f32 {
@@ -178,7 +191,7 @@ impl<R: Real> crate::Noise<R, 2> for Flow {
     }
     fn sample_lanes(&self, p: &[[R; LANES]; 2], out: &mut [R; LANES]) {
         let mut gradient = [[R::ZERO; LANES]; 2];
-        simplex::<R, _, 2, LANES, false>(self.perlin.chain(), self, SCALE, p, out, &mut gradient);
+        self.body::<R, LANES, false>(&self.turn, p, out, &mut gradient);
     }
 }
 
@@ -186,36 +199,12 @@ impl<R: Real> crate::NoiseGradient<R, 2> for Flow {
     #[inline]
     fn sample_with_gradient(&self, p: [R; 2]) -> (R, [R; 2]) {
         let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; 2]);
-        let p = p.map(|x| [x]);
-        simplex::<R, _, 2, 1, true>(
-            self.perlin.chain(),
-            self,
-            SCALE,
-            &p,
-            &mut value,
-            &mut gradient,
-        );
+        self.body::<R, 1, true>(&self.turn, &p.map(|x| [x]), &mut value, &mut gradient);
         (value[0], gradient.map(|g| g[0]))
     }
 }
 
 crate::noise::inherent_amplitude_bound!(Flow, []);
-
-/// The gradients of one octave of a [`FlowSum`]: its turn.
-struct Octave<'a> {
-    turn: &'a [(f32, I16F16); 2],
-}
-
-impl<R: Real> Gradients<R, 2> for Octave<'_> {
-    #[inline(always)]
-    fn gradient(&self, h: u32) -> [R; 2] {
-        turned(h, self.turn)
-    }
-    #[inline(always)]
-    fn times(d: R, g: R) -> R {
-        d.mul_fraction(g)
-    }
-}
 
 /// Perlin and Neyret's flow fBm: a fractal sum of [`Flow`] octaves whose gradients turn at
 /// rates that grow (or shrink) from octave to octave, each octave's point *advected* by the
@@ -363,17 +352,10 @@ impl<R: Real> crate::Noise<R, 2> for FlowSum {
                 let x = p[a].wrapping_mul(frequency);
                 x.saturating_add(-advection.saturating_mul(slope[a]))
             });
-            let octave = Octave { turn };
             let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; 2]);
             let q = q.map(|x: R| [x]);
-            simplex::<R, _, 2, 1, true>(
-                self.flow.perlin.chain(),
-                &octave,
-                SCALE,
-                &q,
-                &mut value,
-                &mut gradient,
-            );
+            self.flow
+                .body::<R, 1, true>(turn, &q, &mut value, &mut gradient);
             sum = sum.saturating_add(amplitude.saturating_mul(value[0]));
             for (s, g) in slope.iter_mut().zip(gradient) {
                 *s = s.saturating_add(amplitude.saturating_mul(g[0]));
