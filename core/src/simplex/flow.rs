@@ -366,18 +366,11 @@ impl<R: Real> crate::Noise<R, 2> for FlowSum {
         sum.canonical()
     }
 
+    /// [`Fractal`](crate::fractal::Fractal)'s bound for an fBm of [`Flow`] with these
+    /// octaves: advection moves points, never values.
     fn amplitude_bound(&self) -> f32 {
-        let g = self
-            .octaves
-            .gain()
-            .abs()
-            .max(I16F16::from_f32(self.octaves.gain()).to_num::<f32>().abs());
-        let (mut total, mut a) = (0.0f32, 1.0f32);
-        for _ in 0..self.octaves.count() {
-            total += a;
-            a *= g;
-        }
-        total * (1.0 + crate::lattice::ROUNDING) * (1.0 + 1e-5) + 1e-4
+        let fbm = crate::fractal::Fractal::fbm(&self.flow, self.octaves);
+        crate::Noise::<R, 2>::amplitude_bound(&fbm)
     }
 }
 
