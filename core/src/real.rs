@@ -75,6 +75,9 @@ pub(crate) mod sealed {
         /// so a short vector keeps its length where rounded squares would lose it: a length
         /// of 2⁻⁹ has a square below 2⁻¹⁶.
         fn norm<const D: usize>(v: [Self; D]) -> Self;
+        /// `v` rounded to the type (nearest; fixed point saturates, NaN is 0), for offsets
+        /// computed in `f64` (OpenSimplex2's rotated lattices).
+        fn from_f64_nearest(v: f64) -> Self;
     }
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
@@ -148,6 +151,10 @@ pub(crate) mod sealed {
                     }
                     crate::Real::sqrt(sum)
                 }
+                #[inline]
+                fn from_f64_nearest(v: f64) -> Self {
+                    v as $t
+                }
             }
         };
     }
@@ -195,6 +202,10 @@ pub(crate) mod sealed {
         #[inline]
         fn fixed_bits(self) -> i32 {
             self.to_bits()
+        }
+        #[inline]
+        fn from_f64_nearest(v: f64) -> Self {
+            super::fixed_from_float(v)
         }
         #[inline]
         fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]) {

@@ -56,8 +56,10 @@
 //! ```
 
 mod flow;
+mod open;
 
 pub use flow::{Flow, FlowSum};
+pub use open::{Improve, OpenSimplex2, OpenSimplex2S};
 
 use crate::Real;
 use crate::batch::LANES;

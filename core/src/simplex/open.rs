@@ -1,0 +1,1112 @@
+//! OpenSimplex2 and OpenSimplex2S (K. Jordan, "KdotJPG", 2019–2022): gradient noise on lattices
+//! chosen for isotropy, reproducing the reference implementation (the `KdotJPG/OpenSimplex2`
+//! repository's Rust port, the `opensimplex2` crate 1.1.0) within 10⁻⁶ in `f64`.
+//!
+//! Like [`Simplex`](super::Simplex), each lattice vertex near the point contributes
+//! `(r² − |d|²)⁴ (g·d)` for its offset `d` and its gradient `g`; the lattices and radii differ:
+//!
+//! * **2D** (both): the triangular lattice, Perlin's skewed square lattice (`F = (√3 − 1)/2`).
+//!   OpenSimplex2 takes the three corners of the point's triangle with `r² = ½` (simplex noise
+//!   with other gradients and hash); OpenSimplex2S four vertices with `r² = ⅔`, a wider kernel
+//!   that is smoother and less grid-aligned.
+//! * **3D**: the body-centred cubic lattice, built as two cubic lattices offset by `(½, ½, ½)`
+//!   and rotated so that no axis lies along a lattice direction. OpenSimplex2 takes the two
+//!   closest vertices of each cubic lattice with `r² = 0.6`; OpenSimplex2S up to eight chosen
+//!   near the point with `r² = ¾`.
+//! * **4D**: OpenSimplex2 takes one vertex from each of five copies of the A₄* lattice offset
+//!   along the main diagonal by steps of `0.2` (`r² = 0.6`); OpenSimplex2S every vertex of the
+//!   A₄ lattice within `r² = 0.8`.
+//!
+//! The vertex choices are the reference's, including where they leave a vertex in reach out:
+//! 3D and 4D OpenSimplex2 and 3D OpenSimplex2S have small jumps there (up to 4·10⁻³,
+//! measured; see [`OpenSimplex2`]), the reference's own.
+//!
+//! **Hash**: no permutation table. A vertex's hash is `(seed ⊕ Σₐ cellₐ·primeₐ) · m` in
+//! wrapping 64-bit integers (four 64-bit primes and a multiplier); its top bits folded onto its
+//! low bits pick one of 24 (2D), 48 (3D) or 160 (4D) gradients, each set cycled over a
+//! power-of-two table as in the reference. The seed is any `i64`; seeds that differ give
+//! unrelated noise.
+//!
+//! **Orientation** ([`Improve`]): the reference offers its lattices turned so that a plane of
+//! the input is as isotropic as possible and the remaining axis is the "different" one (height,
+//! time). bandnoise offers the default orientation and the two for a vertical `z` or `y`.
+//!
+//! **Numbers**: the coordinates are turned onto the lattice in `f64` whatever the number type
+//! (`f32` and I16F16 coordinates are exact in `f64`), as the reference does, because the
+//! rotations have irrational coefficients that no integer skew reproduces; the cells are the
+//! floors (or, 3D OpenSimplex2, the nearest integers) of the turned coordinates, and the
+//! offsets within the cell are rounded once to the number type, where everything else is
+//! computed. So `f32` keeps its offsets' precision far from the origin, and fixed point never
+//! overflows. On cores without a double-precision unit the turn costs a few soft-float
+//! operations per sample; [`Simplex`](super::Simplex) is the cheaper noise there.
+//!
+//! **No periodic variant**: the rotated and diagonal-offset lattices have no period along the
+//! axes (psrdnoise, Gustavson & McEwan 2022, builds a periodic 2D simplex lattice instead).
+//!
+//! # Examples
+//!
+//! ```
+//! use bandnoise::{I16F16, Noise, simplex::{Improve, OpenSimplex2, OpenSimplex2S}};
+//!
+//! let fast = OpenSimplex2::new(0);
+//! let v: f64 = fast.sample([0.3, 4.7, 1.5]);
+//! assert!(v.abs() <= f64::from(fast.amplitude_bound::<3>()));
+//! // Terrain with z up: the xy plane is the isotropic one.
+//! let terrain = OpenSimplex2S::new(-7).improving(Improve::XY);
+//! let h: f32 = terrain.sample([12.5, -3.25, 0.5]);
+//! let q: I16F16 = terrain.sample([12.5, -3.25, 0.5].map(I16F16::from_num));
+//! assert!((q.to_num::<f32>() - h).abs() < 1e-3);
+//! ```
+
+use crate::Real;
+use crate::real::sealed::Sealed;
+
+/// The primes that hash a vertex's cell, by axis.
+const PRIME: [i64; 4] = [
+    0x5205_402B_9270_C86F,
+    0x598C_D327_0038_17B5,
+    0x5BCC_226E_9FA0_BACB,
+    0x56CC_5227_E58F_554B,
+];
+/// The multiplier that mixes a vertex's hash.
+const HASH_MULTIPLIER: i64 = 0x53A3_F72D_EEC5_46F5;
+/// The seed of 3D's second cubic lattice is the seed `⊕` this.
+const SEED_FLIP_3D: i64 = -0x52D5_47B2_E96E_D629;
+/// The seeds of 4D OpenSimplex2's five lattice copies differ by this.
+const SEED_OFFSET_4D: i64 = 0x0E83_DC3E_0DA7_164D;
+
+/// `U = (1/√3 − 1)/2`, the 2D unskew (offsets from skewed fractions: `dₐ = fₐ + U·Σf`).
+const UNSKEW_2D: f64 = -0.211_324_865_405_187_13;
+/// The 4D unskew of OpenSimplex2's A₄* lattice, `(√5 − 1)/4`.
+const UNSKEW_4D_FAST: f64 = 0.309_016_994_374_947;
+/// The 4D unskew of OpenSimplex2S's A₄ lattice, `(1/√5 − 1)/4`.
+const UNSKEW_4D_SMOOTH: f64 = -0.138_196_601_125_011;
+/// The offset between 4D OpenSimplex2's lattice copies along each skewed axis.
+const LATTICE_STEP_4D: f64 = 0.2;
+
+/// One variant's kernel in one dimension: `r²` and the reference's normaliser (the value is
+/// `Σ (r² − |d|²)⁴ (g·d) / normaliser` for unit-scale gradients `g`).
+struct Kernel {
+    /// `1/r²`: the kernel is computed as `τ = 1 − |d|²/r²`, in `[0, 1]` where it counts.
+    inverse_radius: f64,
+    /// `r⁸ / normaliser`: the value is this times `Σ τ⁴ (g·d)`.
+    scale: f64,
+    /// `r`'s bound on one vertex's contribution: `max (1 − x²/r²)⁴ x` over `x` (at `x = r/3`,
+    /// `(8/9)⁴ r/3`) times the longest gradient and the scale, times the most vertices in
+    /// reach, in `f32` (the amplitude bound, proved; see [`OpenSimplex2`]).
+    bound: f32,
+}
+
+impl Kernel {
+    const fn new(r2: f64, normaliser: f64, longest_gradient: f64, vertices: u32) -> Self {
+        let scale = r2 * r2 * r2 * r2 / normaliser;
+        // √r2 by Newton's method (const fn has no sqrt): r2 is in [½, 1].
+        let mut r = 1.0;
+        let mut i = 0;
+        while i < 8 {
+            r = 0.5 * (r + r2 / r);
+            i += 1;
+        }
+        let peak = 0.624_295_077_379_972_5 * r / 3.0; // (8/9)⁴ = 0.6242950773799725
+        let bound = peak * longest_gradient * scale * vertices as f64;
+        Self {
+            inverse_radius: 1.0 / r2,
+            scale,
+            // Rounding in the number types stays far below the slack of this bound.
+            bound: (bound * 1.001) as f32,
+        }
+    }
+}
+
+/// The longest gradient in each dimension's set, rounded up (the 3D set is not normalised:
+/// its longest is 3.30136).
+const LONGEST: [f64; 5] = [0.0, 0.0, 1.0, 3.3014, 1.0];
+
+/// OpenSimplex2's kernels, by dimension: the reference's `r²` and normalisers, and the most
+/// vertices that contribute (3 corners; 2 per cubic lattice; 1 per lattice copy).
+const FAST: [Kernel; 5] = [
+    Kernel::new(0.5, 0.010_016_341_213_657_12, 1.0, 3),
+    Kernel::new(0.5, 0.010_016_341_213_657_12, 1.0, 3),
+    Kernel::new(0.5, 0.010_016_341_213_657_12, LONGEST[2], 3),
+    Kernel::new(0.6, 0.079_698_376_689_353_31, LONGEST[3], 4),
+    Kernel::new(0.6, 0.022_006_593_324_189_7, LONGEST[4], 5),
+];
+
+/// OpenSimplex2S's kernels, by dimension (vertices: 4 in 2D; in 3D `v₀`, `v₁` and at most two
+/// more per axis ([`smooth_3d`]), 8; in 4D the candidates of [`SMOOTH_4D`], a loose count: no
+/// tighter count of the vertices in reach at once is proved yet).
+const SMOOTH: [Kernel; 5] = [
+    Kernel::new(2.0 / 3.0, 0.054_818_664_956_251_18, 1.0, 4),
+    Kernel::new(2.0 / 3.0, 0.054_818_664_956_251_18, 1.0, 4),
+    Kernel::new(2.0 / 3.0, 0.054_818_664_956_251_18, LONGEST[2], 4),
+    Kernel::new(0.75, 0.278_192_611_752_718_6, LONGEST[3], 8),
+    Kernel::new(
+        0.8,
+        0.111_274_018_899_455_51,
+        LONGEST[4],
+        SMOOTH_4D.len() as u32,
+    ),
+];
+
+/// Which plane of the input the lattice is turned to serve best (the reference's "Improve"
+/// orientations). The noise's statistics are the same in every orientation; what changes is
+/// which slices of it look most isotropic.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Improve {
+    /// The reference's standard lattice orientation: 2D `noise2`, 3D `noise3_Fallback`, 4D
+    /// `noise4_Fallback`.
+    #[default]
+    Standard,
+    /// `z` (or time) is the different axis and the `xy` plane the isotropic one: terrain with
+    /// `z` up, or a 2D image animated along `z`. 2D: as `Standard`; 3D `noise3_ImproveXY`;
+    /// 4D `noise4_ImproveXYZ_ImproveXY`.
+    XY,
+    /// `y` is the different axis and the `xz` plane the isotropic one: terrain with `y` up.
+    /// 2D `noise2_ImproveX` (`y` along a lattice diagonal); 3D `noise3_ImproveXZ`; 4D
+    /// `noise4_ImproveXYZ_ImproveXZ`.
+    XZ,
+}
+
+/// OpenSimplex2 ("fast"): simplex noise in 2D, two closest vertices per cubic lattice on the
+/// body-centred cubic lattice in 3D, five lattice copies in 4D (module docs), reproducing the
+/// `opensimplex2` crate's `fast` module.
+///
+/// * **Dimensions**: 2D–4D as the reference; 1D is the 2D noise along the line `y = 0`.
+/// * **Seed**: any `i64`, as the reference's.
+/// * **Range**: about `[−1, 1]` (the reference's normalisers; largest `|n|` found over
+///   2·10⁵ random points: 1.000, 0.991, 0.947 in 2D–4D, `tests/tests/opensimplex.rs`).
+///   [`Noise::amplitude_bound`] is proved and loose: every vertex that can contribute at its
+///   kernel's peak `(8/9)⁴ r/3` along the longest gradient (2.76, 3.47, 4.75).
+/// * **Reference**: `f64` is the reference's algorithm within 1.2·10⁻⁹ (its code with `f64`
+///   for its internal `f32`, `tests/reference/`). The published crate rounds its offsets and
+///   gradients to `f32`, which moves its values by up to 2.1·10⁻⁶ (2D; 99.2% of points within
+///   10⁻⁶), 0.9·10⁻⁶ (3D, all within) and 1.5·10⁻⁶ (4D, 99.99% within); `f64` is never
+///   farther from it than that rounding. `f32` follows `f64` within 1.5·10⁻⁶ and I16F16
+///   within 6·10⁻⁴ (measured, `|x| < 200`).
+/// * **Continuity**: 2D is continuous. 3D and 4D take a fixed number of vertices rather than
+///   every one in reach, so they jump where the choice changes while a vertex left out is
+///   still in reach: by up to 3.9·10⁻³ (3D) and 2.8·10⁻³ (4D), found by bisection along 3000
+///   random segments. The reference jumps identically (same test); [`OpenSimplex2S`] in 2D
+///   and 4D, and [`Simplex`](super::Simplex), are continuous.
+/// * **Bad input**: a non-finite coordinate is 0; a turned coordinate whose cell lies outside
+///   `i32` has its cell wrapped modulo 2³² (the reference saturates it).
+///
+/// [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct OpenSimplex2 {
+    seed: i64,
+    improve: Improve,
+}
+
+/// OpenSimplex2S ("smooth", formerly SuperSimplex): the same lattices as [`OpenSimplex2`] with
+/// wider kernels (`r² = ⅔`, `¾`, `0.8` in 2D–4D) and more vertices, smoother and less
+/// grid-aligned at about twice the cost; the reference recommends it for ridged noise.
+/// Reproduces the `opensimplex2` crate's `smooth` module.
+///
+/// * **Dimensions**: 2D–4D as the reference; 1D is the 2D noise along the line `y = 0`.
+/// * **Seed**: any `i64`, as the reference's.
+/// * **Range**: about `[−1, 1]` (largest `|n|` found: 0.995, 0.988, 0.932 in 2D–4D).
+///   [`Noise::amplitude_bound`] is proved as [`OpenSimplex2`]'s, counting the vertices that
+///   can contribute (2.45, 5.42; in 4D every candidate, 70: loose).
+/// * **Reference**: `f64` within 10⁻⁹ of the reference's algorithm; the published crate's
+///   `f32` rounding moves it by up to 1.3·10⁻⁶ (2D, 99.99% of points within 10⁻⁶) and
+///   0.6·10⁻⁶ (3D, 4D: all within). 4D evaluates every vertex in reach (the reference narrows
+///   the candidates with a table; the values agree).
+/// * **Continuity**: 2D and 4D are continuous; 3D takes the reference's choice of vertices,
+///   which leaves some in reach out, and jumps by up to 2·10⁻³ as the reference does.
+/// * **Bad input**: as [`OpenSimplex2`].
+///
+/// [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct OpenSimplex2S {
+    seed: i64,
+    improve: Improve,
+}
+
+macro_rules! open_simplex_common {
+    ($t:ident) => {
+        impl $t {
+            /// The noise for `seed`, in the standard orientation.
+            #[must_use]
+            pub const fn new(seed: i64) -> Self {
+                Self {
+                    seed,
+                    improve: Improve::Standard,
+                }
+            }
+
+            /// The same noise with its lattice turned for `improve`.
+            #[must_use]
+            pub const fn improving(mut self, improve: Improve) -> Self {
+                self.improve = improve;
+                self
+            }
+
+            /// The seed.
+            #[must_use]
+            pub const fn seed(&self) -> i64 {
+                self.seed
+            }
+
+            /// The orientation.
+            #[must_use]
+            pub const fn improve(&self) -> Improve {
+                self.improve
+            }
+        }
+    };
+}
+
+open_simplex_common!(OpenSimplex2);
+open_simplex_common!(OpenSimplex2S);
+
+/// The point `p` turned onto the lattice, in `f64` (module docs): the reference's transforms.
+/// Non-finite coordinates are 0 first, so that one does not spread to the other axes.
+#[inline]
+fn turn<R: Real, const D: usize>(p: [R; D], improve: Improve, smooth: bool) -> [f64; D] {
+    let p: [f64; D] = p.map(|x| x.to_f64().finite_or_zero());
+    let mut t = [0.0; D];
+    match (D, improve) {
+        (2, Improve::Standard | Improve::XY) => {
+            let s = 0.366_025_403_784_439 * (p[0] + p[1]);
+            t[0] = p[0] + s;
+            t[1] = p[1] + s;
+        }
+        (2, Improve::XZ) => {
+            let xx = p[0] * core::f64::consts::FRAC_1_SQRT_2;
+            let yy =
+                p[1] * (core::f64::consts::FRAC_1_SQRT_2 * (1.0 + 2.0 * 0.366_025_403_784_439));
+            t[0] = yy + xx;
+            t[1] = yy - xx;
+        }
+        (3, Improve::Standard) => {
+            let r = 2.0 / 3.0 * (p[0] + p[1] + p[2]);
+            for a in 0..3 {
+                t[a] = r - p[a];
+            }
+        }
+        (3, Improve::XY | Improve::XZ) => {
+            // The isotropic plane's axes `u`, `v` and the different axis `h`.
+            let (u, v, h) = if improve == Improve::XY {
+                (0, 1, 2)
+            } else {
+                (0, 2, 1)
+            };
+            let uv = p[u] + p[v];
+            let s2 = uv * -0.211_324_865_405_187_13;
+            let hh = p[h] * 0.577_350_269_189_626;
+            t[u] = p[u] + s2 + hh;
+            t[v] = p[v] + s2 + hh;
+            t[h] = uv * -0.577_350_269_189_626 + hh;
+        }
+        (4, Improve::Standard) => {
+            // The reference keeps this skew in `f32` (0.309016994374947 and
+            // -0.138196601125011 rounded to `f32`).
+            let skew = if smooth {
+                0.309_017_f32
+            } else {
+                -0.138_196_6_f32
+            };
+            let s = f64::from(skew) * (p[0] + p[1] + p[2] + p[3]);
+            for a in 0..4 {
+                t[a] = p[a] + s;
+            }
+        }
+        (4, Improve::XY | Improve::XZ) => {
+            let (u, v, h) = if improve == Improve::XY {
+                (0, 1, 2)
+            } else {
+                (0, 2, 1)
+            };
+            let uv = p[u] + p[v];
+            let s2 = uv * -0.211_324_865_405_187;
+            let hh = p[h] * 0.288_675_134_594_812_9;
+            let ww = p[3]
+                * if smooth {
+                    1.118_033_988_749_894
+                } else {
+                    0.223_606_797_749_978_8
+                };
+            t[u] = p[u] + (hh + ww + s2);
+            t[v] = p[v] + (hh + ww + s2);
+            t[h] = uv * -0.577_350_269_189_626 + (hh + ww);
+            t[3] = p[h] * -0.866_025_403_784_439 + ww;
+        }
+        _ => {}
+    }
+    t
+}
+
+/// A turned coordinate's cell (its floor) and the offset within it, in `R`.
+#[inline(always)]
+fn floor_split<R: Real>(v: f64) -> (i32, R) {
+    let (cell, frac) = Real::split(v);
+    (cell, R::from_f64_nearest(frac))
+}
+
+/// A turned coordinate's nearest integer (halves away from zero, as the reference's
+/// `fastRound`) and the offset from it, in `[−½, ½]`, in `R`.
+#[inline(always)]
+fn round_split<R: Real>(v: f64) -> (i32, R) {
+    if v < 0.0 {
+        let (cell, frac) = Real::split(0.5 - v);
+        (cell.wrapping_neg(), R::from_f64_nearest(0.5 - frac))
+    } else {
+        let (cell, frac) = Real::split(v + 0.5);
+        (cell, R::from_f64_nearest(frac - 0.5))
+    }
+}
+
+/// `τ⁴ (g·d)` with `τ = 1 − |d|²/r²` for the vertex at `cell` (hashed with `seed`) and offset
+/// `d`; 0 beyond the radius (where the hash is not computed).
+#[inline(always)]
+fn vertex<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D], inverse_radius: R) -> R {
+    reach(seed, cell, d, inverse_radius).unwrap_or(R::ZERO)
+}
+
+/// [`vertex`]'s contribution, or `None` if the vertex is beyond the radius.
+#[inline(always)]
+fn reach<R: Real, const D: usize>(
+    seed: i64,
+    cell: [i64; D],
+    d: [R; D],
+    inverse_radius: R,
+) -> Option<R> {
+    // |dₐ| < 2: the squares, their sum and its product with 1/r² ≤ 2 fit every type.
+    let mut q = R::ZERO;
+    for x in d {
+        q = q + x.mul_fraction(x);
+    }
+    let tau = R::ONE - q.mul_fraction(inverse_radius);
+    if tau <= R::ZERO {
+        return None;
+    }
+    let mut h = seed;
+    for a in 0..D {
+        h ^= cell[a].wrapping_mul(PRIME[a]);
+    }
+    let g = gradient::<R, D>(h.wrapping_mul(HASH_MULTIPLIER));
+    // |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
+    let mut dot = R::ZERO;
+    for a in 0..D {
+        dot = dot + d[a].mul_fraction(g[a]);
+    }
+    let tau2 = tau.mul_fraction(tau);
+    Some(tau2.mul_fraction(tau2).mul_fraction(dot))
+}
+
+/// The gradient for the mixed hash `h`: its top bits folded onto its low bits index the
+/// reference's table of the dimension's set cycled to 128 (2D), 256 (3D) or 512 (4D) entries.
+#[inline(always)]
+fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
+    let mut g = [R::ZERO; D];
+    match D {
+        2 => {
+            let i = ((h ^ (h >> 58)) >> 1) as u32 & 127;
+            let row = &GRAD2[(i % 24) as usize];
+            for a in 0..D {
+                g[a] = R::from_ratio(row[a], 29);
+            }
+        }
+        3 => {
+            let i = ((h ^ (h >> 58)) >> 2) as u32 & 255;
+            let row = &GRAD3[(i % 48) as usize];
+            for a in 0..D {
+                g[a] = R::from_ratio(row[a], 29);
+            }
+        }
+        _ => {
+            let i = ((h ^ (h >> 57)) >> 2) as u32 & 511;
+            let row = &GRAD4[(i % 160) as usize];
+            for a in 0..D {
+                g[a] = R::from_ratio(row[a], 29);
+            }
+        }
+    }
+    g
+}
+
+/// The offset from the 2D skewed lattice vertex `cell + step` of a point whose unskewed offset
+/// from `cell` is `d0`: `d0 − (step + U·Σstep)`.
+#[inline(always)]
+fn unskewed<R: Real, const D: usize>(d0: [R; D], step: [i32; D], unskew: R) -> [R; D] {
+    let along: i32 = step.iter().sum();
+    // |Σstep| ≤ 8 and |U| < ⅓: the product fits 64 bits, and Q30 keeps it below 2³¹.
+    let diagonal = unskew.mul_fraction(R::from_i32(along));
+    let mut d = d0;
+    for a in 0..D {
+        d[a] = d0[a] - R::from_i32(step[a]) - diagonal;
+    }
+    d
+}
+
+/// The cell of the vertex `cell + step`, for hashing.
+#[inline(always)]
+fn plus<const D: usize>(cell: [i32; D], step: [i32; D]) -> [i64; D] {
+    let mut v = [0i64; D];
+    for a in 0..D {
+        v[a] = i64::from(cell[a]) + i64::from(step[a]);
+    }
+    v
+}
+
+/// The 2D noise at the skewed point `t`: the corners `(0, 0)` and `(1, 1)` of its skewed cell
+/// and, fast, the third corner of its triangle; smooth, the two vertices beyond the two edges
+/// nearest the point (the reference's choices, which hold every vertex in reach).
+#[inline(always)]
+fn body_2d<R: Real>(seed: i64, t: [f64; 2], smooth: bool) -> R {
+    let kernel = if smooth { &SMOOTH[2] } else { &FAST[2] };
+    let inverse_radius = R::from_f64_nearest(kernel.inverse_radius);
+    let (cx, fx) = floor_split::<R>(t[0]);
+    let (cy, fy) = floor_split::<R>(t[1]);
+    let cell = [cx, cy];
+    // The unskewed offset from the cell's base vertex; Σf < 2 and |U| < ¼.
+    let unskew = R::from_f64_nearest(UNSKEW_2D);
+    let shift = unskew.mul_fraction(fx + fy);
+    let d0 = [fx + shift, fy + shift];
+    let corner = |step: [i32; 2]| {
+        vertex(
+            seed,
+            plus(cell, step),
+            unskewed(d0, step, unskew),
+            inverse_radius,
+        )
+    };
+    let mut value = corner([0, 0]) + corner([1, 1]);
+    if !smooth {
+        value = value + corner(if fy > fx { [0, 1] } else { [1, 0] });
+    } else {
+        // The reference's nested choices, on the skewed fractions.
+        let xmy = fx - fy;
+        if fx + fy > R::ONE {
+            value = value + corner(if fx + xmy > R::ONE { [2, 1] } else { [0, 1] });
+            value = value + corner(if fy - xmy > R::ONE { [1, 2] } else { [1, 0] });
+        } else {
+            value = value + corner(if fx + xmy < R::ZERO { [-1, 0] } else { [1, 0] });
+            value = value + corner(if fy < xmy { [0, -1] } else { [0, 1] });
+        }
+    }
+    value.mul_rn(R::from_f64_nearest(kernel.scale)).canonical()
+}
+
+/// The first index of the largest of `v` (the reference's tie order).
+#[inline(always)]
+fn largest<R: Real, const D: usize>(v: [R; D]) -> usize {
+    let mut best = 0;
+    for a in 1..D {
+        if v[a] > v[best] {
+            best = a;
+        }
+    }
+    best
+}
+
+/// 3D OpenSimplex2 at the turned point `t`: on each cubic lattice, the nearest vertex and the
+/// next one along the axis of the largest offset.
+#[inline(always)]
+fn fast_3d<R: Real>(seed: i64, t: [f64; 3]) -> R {
+    let inverse_radius = R::from_f64_nearest(FAST[3].inverse_radius);
+    let half = R::from_ratio(1, 1);
+    let mut cell = [0i64; 3];
+    let mut d = [R::ZERO; 3];
+    // The side of the nearest vertex the point lies on, per axis: +1 toward cell + 1.
+    let mut up = [true; 3];
+    for a in 0..3 {
+        let (c, f) = round_split::<R>(t[a]);
+        cell[a] = i64::from(c);
+        d[a] = f;
+        up[a] = f >= R::ZERO;
+    }
+    let mut seed = seed;
+    let mut value = R::ZERO;
+    for lattice in 0..2 {
+        value = value + vertex(seed, cell, d, inverse_radius);
+        let axis = largest(d.map(Real::abs));
+        let (mut next, mut e) = (cell, d);
+        if up[axis] {
+            next[axis] += 1;
+            e[axis] = e[axis] - R::ONE;
+        } else {
+            next[axis] -= 1;
+            e[axis] = e[axis] + R::ONE;
+        }
+        value = value + vertex(seed, next, e, inverse_radius);
+        if lattice == 1 {
+            break;
+        }
+        // The other cubic lattice, offset by (½, ½, ½): its vertex at position c − ½ is
+        // hashed as c, and its nearest vertex lies toward the point on every axis.
+        for a in 0..3 {
+            if up[a] {
+                cell[a] += 1;
+                d[a] = d[a] - half;
+            } else {
+                d[a] = d[a] + half;
+            }
+            up[a] = !up[a];
+        }
+        seed ^= SEED_FLIP_3D;
+    }
+    value.mul_rn(R::from_f64_nearest(FAST[3].scale)).canonical()
+}
+
+/// 3D OpenSimplex2S at the turned point `t`: the nearest corner `v₀` of the point's cube in
+/// the first cubic lattice and the vertex `v₁` at the cube's centre in the second, then the
+/// reference's choices among their neighbours toward the point: per axis, `v₀` flipped along
+/// it if in reach, else `v₀` flipped along the other two and `v₁` moved along it; then `v₁`
+/// moved along each pair of axes whose single move was not taken.
+///
+/// These choices are the reference's, not every vertex in reach: where `v₀` flipped along an
+/// axis is barely in reach, `v₁` moved along that axis can be in reach too and is left out, so
+/// the reference (and this) has small jumps (`tests/tests/opensimplex.rs` measures them).
+#[inline(always)]
+fn smooth_3d<R: Real>(seed: i64, t: [f64; 3]) -> R {
+    let inverse_radius = R::from_f64_nearest(SMOOTH[3].inverse_radius);
+    let half = R::from_ratio(1, 1);
+    let mut cell = [0i32; 3];
+    let mut f = [R::ZERO; 3];
+    // Per axis: whether the point lies in the upper half of its cube (then `v₀` is the upper
+    // corner and `v₁`'s neighbour toward the point is the upper one).
+    let mut upper = [false; 3];
+    for a in 0..3 {
+        (cell[a], f[a]) = floor_split::<R>(t[a]);
+        upper[a] = f[a] >= half;
+    }
+    let seed1 = seed ^ SEED_FLIP_3D;
+    // `v₀` with the axes of `flip` flipped to the cube's other corner.
+    let corner = |flip: [bool; 3]| {
+        let mut step = [0i32; 3];
+        let mut d = f;
+        for a in 0..3 {
+            if upper[a] != flip[a] {
+                step[a] = 1;
+                d[a] = d[a] - R::ONE;
+            }
+        }
+        reach(seed, plus(cell, step), d, inverse_radius)
+    };
+    // `v₁` (at the cube's centre, hashed as cell + 1) moved toward the point along `moved`.
+    let centre = |moved: [bool; 3]| {
+        let mut step = [1i32; 3];
+        let mut d = f.map(|x| x - half);
+        for a in 0..3 {
+            if moved[a] {
+                if upper[a] {
+                    step[a] = 2;
+                    d[a] = d[a] - R::ONE;
+                } else {
+                    step[a] = 0;
+                    d[a] = d[a] + R::ONE;
+                }
+            }
+        }
+        reach(seed1, plus(cell, step), d, inverse_radius)
+    };
+    let add = |value: R, v: Option<R>| v.map_or(value, |v| value + v);
+    let mut value = add(R::ZERO, corner([false; 3]));
+    value = add(value, centre([false; 3]));
+    // Per axis: whether `v₁` moved along it alone was taken.
+    let mut moved_alone = [false; 3];
+    for (a, moved) in moved_alone.iter_mut().enumerate() {
+        let along = core::array::from_fn(|b| b == a);
+        let others = core::array::from_fn(|b| b != a);
+        if let Some(v) = corner(along) {
+            value = value + v;
+        } else {
+            value = add(value, corner(others));
+            if let Some(v) = centre(along) {
+                value = value + v;
+                // The reference then skips `v₁` moved along the other two axes.
+                *moved = true;
+            }
+        }
+    }
+    for (a, moved) in moved_alone.into_iter().enumerate() {
+        if !moved {
+            value = add(value, centre(core::array::from_fn(|b| b != a)));
+        }
+    }
+    value
+        .mul_rn(R::from_f64_nearest(SMOOTH[3].scale))
+        .canonical()
+}
+
+/// 4D OpenSimplex2 at the skewed point `t`: one vertex from each of five copies of the lattice
+/// offset by `0.2` along the main diagonal, starting with the copy whose base simplex surely
+/// holds a contributing vertex (the reference's walk).
+#[inline(always)]
+fn fast_4d<R: Real>(seed: i64, t: [f64; 4]) -> R {
+    let inverse_radius = R::from_f64_nearest(FAST[4].inverse_radius);
+    let step = R::from_f64_nearest(LATTICE_STEP_4D);
+    let unskew = R::from_f64_nearest(UNSKEW_4D_FAST);
+    let mut cell = [0i64; 4];
+    let mut f = [R::ZERO; 4];
+    let mut sum = R::ZERO;
+    for a in 0..4 {
+        let (c, x) = floor_split::<R>(t[a]);
+        cell[a] = i64::from(c);
+        f[a] = x;
+        sum = sum + x;
+    }
+    // ⌊1.25 · Σf⌋: the first copy, 0 to 4.
+    let mut start = 0;
+    for k in 1..=4 {
+        if sum >= R::from_f64_nearest(0.8 * f64::from(k)) {
+            start = k;
+        }
+    }
+    let mut seed = seed.wrapping_add(i64::from(start).wrapping_mul(SEED_OFFSET_4D));
+    let back = R::from_f64_nearest(LATTICE_STEP_4D * f64::from(start));
+    for x in &mut f {
+        *x = *x - back;
+    }
+    let mut value = R::ZERO;
+    for copy in 0..5 {
+        // The vertex of this copy's simplex nearest the point: the base vertex, or one step
+        // along the axis of the largest offset if that is nearer.
+        let sum = f[0] + f[1] + f[2] + f[3];
+        let axis = largest(f);
+        if f[axis] >= R::ONE - sum {
+            cell[axis] += 1;
+            f[axis] = f[axis] - R::ONE;
+        }
+        let s = (f[0] + f[1] + f[2] + f[3]).mul_fraction(unskew);
+        let d = f.map(|x| x + s);
+        value = value + vertex(seed, cell, d, inverse_radius);
+        if copy == 4 {
+            break;
+        }
+        for x in &mut f {
+            *x = *x + step;
+        }
+        seed = seed.wrapping_sub(SEED_OFFSET_4D);
+        if copy == start {
+            for c in &mut cell {
+                *c -= 1;
+            }
+            seed = seed.wrapping_add(SEED_OFFSET_4D.wrapping_mul(5));
+        }
+    }
+    value.mul_rn(R::from_f64_nearest(FAST[4].scale)).canonical()
+}
+
+/// `c = 2U + 4U²` for 4D OpenSimplex2S's unskew `U`: a vertex at skewed offset `e` from the
+/// point lies at `|d|² = |e|² + c·(Σe)²` (`c = −0.2`).
+const SMOOTH_4D_METRIC: f64 = {
+    let u = -0.138_196_601_125_011;
+    2.0 * u + 4.0 * u * u
+};
+
+/// The smallest `|d|²` from the vertex at skewed cell offset `v` to a point of the skewed
+/// cell `[0, 1]⁴`: a convex quadratic over a box, so its minimum is the stationary point of one
+/// face (each coordinate at 0, at 1 or free; free ones all equal `−c·Σe`) that lies in the box.
+const fn nearest(v: [i32; 4]) -> f64 {
+    let c = SMOOTH_4D_METRIC;
+    let mut best = f64::MAX;
+    let mut pattern = 0;
+    while pattern < 81 {
+        let mut digits = pattern;
+        let mut e = [0.0; 4];
+        let mut free = [false; 4];
+        let mut fixed = 0.0;
+        let mut k = 0;
+        let mut a = 0;
+        while a < 4 {
+            match digits % 3 {
+                0 => e[a] = -(v[a] as f64),
+                1 => e[a] = 1.0 - v[a] as f64,
+                _ => {
+                    free[a] = true;
+                    k += 1;
+                }
+            }
+            if !free[a] {
+                fixed += e[a];
+            }
+            digits /= 3;
+            a += 1;
+        }
+        let s = fixed / (1.0 + c * k as f64);
+        let mut inside = true;
+        let mut g = c * s * s;
+        a = 0;
+        while a < 4 {
+            if free[a] {
+                e[a] = -c * s;
+                let f = e[a] + v[a] as f64;
+                if f < 0.0 || f > 1.0 {
+                    inside = false;
+                }
+            }
+            g += e[a] * e[a];
+            a += 1;
+        }
+        if inside && g < best {
+            best = g;
+        }
+        pattern += 1;
+    }
+    best
+}
+
+/// The skewed offsets in `{−1, 0, 1, 2}⁴` of the vertices that some point of a cell has within
+/// reach of 4D OpenSimplex2S's kernel (`r² = 0.8`), in the order of their base-4 codes.
+const SMOOTH_4D: [[i8; 4]; smooth_4d_count()] = {
+    let mut out = [[0i8; 4]; smooth_4d_count()];
+    let mut n = 0;
+    let mut code = 0;
+    while code < 256 {
+        let v = [
+            code % 4 - 1,
+            code / 4 % 4 - 1,
+            code / 16 % 4 - 1,
+            code / 64 - 1,
+        ];
+        if nearest(v) < 0.8 {
+            out[n] = [v[0] as i8, v[1] as i8, v[2] as i8, v[3] as i8];
+            n += 1;
+        }
+        code += 1;
+    }
+    out
+};
+
+/// How many vertices [`SMOOTH_4D`] holds.
+const fn smooth_4d_count() -> usize {
+    let mut n = 0;
+    let mut code = 0;
+    while code < 256 {
+        let v = [
+            code % 4 - 1,
+            code / 4 % 4 - 1,
+            code / 16 % 4 - 1,
+            code / 64 - 1,
+        ];
+        if nearest(v) < 0.8 {
+            n += 1;
+        }
+        code += 1;
+    }
+    n
+}
+
+/// 4D OpenSimplex2S at the skewed point `t`: every vertex of [`SMOOTH_4D`], each counted where
+/// it is within reach (the reference narrows the candidates with a table over 4⁴ sub-cells).
+#[inline(always)]
+fn smooth_4d<R: Real>(seed: i64, t: [f64; 4]) -> R {
+    let inverse_radius = R::from_f64_nearest(SMOOTH[4].inverse_radius);
+    let unskew = R::from_f64_nearest(UNSKEW_4D_SMOOTH);
+    let mut cell = [0i32; 4];
+    let mut f = [R::ZERO; 4];
+    for a in 0..4 {
+        (cell[a], f[a]) = floor_split::<R>(t[a]);
+    }
+    let s = (f[0] + f[1] + f[2] + f[3]).mul_fraction(unskew);
+    let d0 = f.map(|x| x + s);
+    let mut value = R::ZERO;
+    for v in &SMOOTH_4D {
+        let step = v.map(i32::from);
+        value = value
+            + vertex(
+                seed,
+                plus(cell, step),
+                unskewed(d0, step, unskew),
+                inverse_radius,
+            );
+    }
+    value
+        .mul_rn(R::from_f64_nearest(SMOOTH[4].scale))
+        .canonical()
+}
+
+macro_rules! open_simplex_impls {
+    ($t:ident, $smooth:expr, $kernels:ident, $three:ident, $four:ident) => {
+        impl<R: Real> crate::Noise<R, 1> for $t {
+            #[inline]
+            fn sample(&self, p: [R; 1]) -> R {
+                crate::Noise::<R, 2>::sample(self, [p[0], R::ZERO])
+            }
+            fn amplitude_bound(&self) -> f32 {
+                $kernels[1].bound
+            }
+        }
+        impl<R: Real> crate::Noise<R, 2> for $t {
+            #[inline]
+            fn sample(&self, p: [R; 2]) -> R {
+                body_2d(self.seed, turn(p, self.improve, $smooth), $smooth)
+            }
+            fn amplitude_bound(&self) -> f32 {
+                $kernels[2].bound
+            }
+        }
+        impl<R: Real> crate::Noise<R, 3> for $t {
+            #[inline]
+            fn sample(&self, p: [R; 3]) -> R {
+                $three(self.seed, turn(p, self.improve, $smooth))
+            }
+            fn amplitude_bound(&self) -> f32 {
+                $kernels[3].bound
+            }
+        }
+        impl<R: Real> crate::Noise<R, 4> for $t {
+            #[inline]
+            fn sample(&self, p: [R; 4]) -> R {
+                $four(self.seed, turn(p, self.improve, $smooth))
+            }
+            fn amplitude_bound(&self) -> f32 {
+                $kernels[4].bound
+            }
+        }
+        crate::noise::inherent_amplitude_bound!($t, []);
+    };
+}
+
+open_simplex_impls!(OpenSimplex2, false, FAST, fast_3d, fast_4d);
+open_simplex_impls!(OpenSimplex2S, true, SMOOTH, smooth_3d, smooth_4d);
+
+#[rustfmt::skip]
+/// The 2D gradient set: 24 unit vectors, Q29.
+static GRAD2: [[i32; 2]; 24] = [
+    [205451603, 496004047],
+    [496004047, 205451603],
+    [496004047, -205451603],
+    [205451603, -496004047],
+    [-205451603, -496004047],
+    [-496004047, -205451603],
+    [-496004047, 205451603],
+    [-205451603, 496004047],
+    [70075716, 532277907],
+    [326826304, 425928331],
+    [425928331, 326826304],
+    [532277907, 70075716],
+    [532277907, -70075716],
+    [425928331, -326826304],
+    [326826304, -425928331],
+    [70075716, -532277907],
+    [-70075716, -532277907],
+    [-326826304, -425928331],
+    [-425928331, -326826304],
+    [-532277907, -70075716],
+    [-532277907, 70075716],
+    [-425928331, 326826304],
+    [-326826304, 425928331],
+    [-70075716, 532277907],
+];
+
+#[rustfmt::skip]
+/// The 3D gradient set: 48 vectors (not normalised), Q29.
+static GRAD3: [[i32; 3]; 48] = [
+    [1194400808, 1194400808, -536870912],
+    [1194400808, 1194400808, 536870912],
+    [1656926694, 629293960, 0],
+    [629293960, 1656926694, 0],
+    [-1194400808, 1194400808, -536870912],
+    [-1194400808, 1194400808, 536870912],
+    [-629293960, 1656926694, 0],
+    [-1656926694, 629293960, 0],
+    [-536870912, -1194400808, -1194400808],
+    [536870912, -1194400808, -1194400808],
+    [0, -1656926694, -629293960],
+    [0, -629293960, -1656926694],
+    [-536870912, -1194400808, 1194400808],
+    [536870912, -1194400808, 1194400808],
+    [0, -629293960, 1656926694],
+    [0, -1656926694, 629293960],
+    [-1194400808, -1194400808, -536870912],
+    [-1194400808, -1194400808, 536870912],
+    [-1656926694, -629293960, 0],
+    [-629293960, -1656926694, 0],
+    [-1194400808, -536870912, -1194400808],
+    [-1194400808, 536870912, -1194400808],
+    [-629293960, 0, -1656926694],
+    [-1656926694, 0, -629293960],
+    [-1194400808, -536870912, 1194400808],
+    [-1194400808, 536870912, 1194400808],
+    [-1656926694, 0, 629293960],
+    [-629293960, 0, 1656926694],
+    [-536870912, 1194400808, -1194400808],
+    [536870912, 1194400808, -1194400808],
+    [0, 629293960, -1656926694],
+    [0, 1656926694, -629293960],
+    [-536870912, 1194400808, 1194400808],
+    [536870912, 1194400808, 1194400808],
+    [0, 1656926694, 629293960],
+    [0, 629293960, 1656926694],
+    [1194400808, -1194400808, -536870912],
+    [1194400808, -1194400808, 536870912],
+    [629293960, -1656926694, 0],
+    [1656926694, -629293960, 0],
+    [1194400808, -536870912, -1194400808],
+    [1194400808, 536870912, -1194400808],
+    [1656926694, 0, -629293960],
+    [629293960, 0, -1656926694],
+    [1194400808, -536870912, 1194400808],
+    [1194400808, 536870912, 1194400808],
+    [629293960, 0, 1656926694],
+    [1656926694, 0, 629293960],
+];
+
+#[rustfmt::skip]
+/// The 4D gradient set: 160 unit vectors, Q29.
+static GRAD4: [[i32; 4]; 160] = [
+    [-361854190, -173938003, -173938003, 311099765],
+    [-402915383, -214999195, 82122385, 270038572],
+    [-402915383, 82122385, -214999195, 270038572],
+    [-473958332, 43834057, 43834057, 244440232],
+    [-244440232, -43834057, -43834057, 473958332],
+    [-270038572, -82122385, 214999195, 402915383],
+    [-270038572, 214999195, -82122385, 402915383],
+    [-311099765, 173938003, 173938003, 361854190],
+    [-361854190, -173938003, 311099765, -173938003],
+    [-402915383, -214999195, 270038572, 82122385],
+    [-402915383, 82122385, 270038572, -214999195],
+    [-473958332, 43834057, 244440232, 43834057],
+    [-244440232, -43834057, 473958332, -43834057],
+    [-270038572, -82122385, 402915383, 214999195],
+    [-270038572, 214999195, 402915383, -82122385],
+    [-311099765, 173938003, 361854190, 173938003],
+    [-361854190, 311099765, -173938003, -173938003],
+    [-402915383, 270038572, -214999195, 82122385],
+    [-402915383, 270038572, 82122385, -214999195],
+    [-473958332, 244440232, 43834057, 43834057],
+    [-244440232, 473958332, -43834057, -43834057],
+    [-270038572, 402915383, -82122385, 214999195],
+    [-270038572, 402915383, 214999195, -82122385],
+    [-311099765, 361854190, 173938003, 173938003],
+    [311099765, -361854190, -173938003, -173938003],
+    [270038572, -402915383, -214999195, 82122385],
+    [270038572, -402915383, 82122385, -214999195],
+    [244440232, -473958332, 43834057, 43834057],
+    [473958332, -244440232, -43834057, -43834057],
+    [402915383, -270038572, -82122385, 214999195],
+    [402915383, -270038572, 214999195, -82122385],
+    [361854190, -311099765, 173938003, 173938003],
+    [-404446879, -203840704, -203840704, -203840704],
+    [-419923485, -232007298, -232007298, 65114282],
+    [-419923485, -232007298, 65114282, -232007298],
+    [-419923485, 65114282, -232007298, -232007298],
+    [-460984678, -273068491, 24053090, 24053090],
+    [-460984678, 24053090, -273068491, 24053090],
+    [-460984678, 24053090, 24053090, -273068491],
+    [-535949049, -18156661, -18156661, -18156661],
+    [-203840704, -404446879, -203840704, -203840704],
+    [-232007298, -419923485, -232007298, 65114282],
+    [-232007298, -419923485, 65114282, -232007298],
+    [65114282, -419923485, -232007298, -232007298],
+    [-273068491, -460984678, 24053090, 24053090],
+    [24053090, -460984678, -273068491, 24053090],
+    [24053090, -460984678, 24053090, -273068491],
+    [-18156661, -535949049, -18156661, -18156661],
+    [-203840704, -203840704, -404446879, -203840704],
+    [-232007298, -232007298, -419923485, 65114282],
+    [-232007298, 65114282, -419923485, -232007298],
+    [65114282, -232007298, -419923485, -232007298],
+    [-273068491, 24053090, -460984678, 24053090],
+    [24053090, -273068491, -460984678, 24053090],
+    [24053090, 24053090, -460984678, -273068491],
+    [-18156661, -18156661, -535949049, -18156661],
+    [-203840704, -203840704, -203840704, -404446879],
+    [-232007298, -232007298, 65114282, -419923485],
+    [-232007298, 65114282, -232007298, -419923485],
+    [65114282, -232007298, -232007298, -419923485],
+    [-273068491, 24053090, 24053090, -460984678],
+    [24053090, -273068491, 24053090, -460984678],
+    [24053090, 24053090, -273068491, -460984678],
+    [-18156661, -18156661, -18156661, -535949049],
+    [-173938003, -361854190, -173938003, 311099765],
+    [-214999195, -402915383, 82122385, 270038572],
+    [82122385, -402915383, -214999195, 270038572],
+    [43834057, -473958332, 43834057, 244440232],
+    [-43834057, -244440232, -43834057, 473958332],
+    [-82122385, -270038572, 214999195, 402915383],
+    [214999195, -270038572, -82122385, 402915383],
+    [173938003, -311099765, 173938003, 361854190],
+    [-173938003, -173938003, -361854190, 311099765],
+    [-214999195, 82122385, -402915383, 270038572],
+    [82122385, -214999195, -402915383, 270038572],
+    [43834057, 43834057, -473958332, 244440232],
+    [-43834057, -43834057, -244440232, 473958332],
+    [-82122385, 214999195, -270038572, 402915383],
+    [214999195, -82122385, -270038572, 402915383],
+    [173938003, 173938003, -311099765, 361854190],
+    [-173938003, -361854190, 311099765, -173938003],
+    [-214999195, -402915383, 270038572, 82122385],
+    [82122385, -402915383, 270038572, -214999195],
+    [43834057, -473958332, 244440232, 43834057],
+    [-43834057, -244440232, 473958332, -43834057],
+    [-82122385, -270038572, 402915383, 214999195],
+    [214999195, -270038572, 402915383, -82122385],
+    [173938003, -311099765, 361854190, 173938003],
+    [-173938003, -173938003, 311099765, -361854190],
+    [-214999195, 82122385, 270038572, -402915383],
+    [82122385, -214999195, 270038572, -402915383],
+    [43834057, 43834057, 244440232, -473958332],
+    [-43834057, -43834057, 473958332, -244440232],
+    [-82122385, 214999195, 402915383, -270038572],
+    [214999195, -82122385, 402915383, -270038572],
+    [173938003, 173938003, 361854190, -311099765],
+    [-173938003, 311099765, -361854190, -173938003],
+    [-214999195, 270038572, -402915383, 82122385],
+    [82122385, 270038572, -402915383, -214999195],
+    [43834057, 244440232, -473958332, 43834057],
+    [-43834057, 473958332, -244440232, -43834057],
+    [-82122385, 402915383, -270038572, 214999195],
+    [214999195, 402915383, -270038572, -82122385],
+    [173938003, 361854190, -311099765, 173938003],
+    [-173938003, 311099765, -173938003, -361854190],
+    [-214999195, 270038572, 82122385, -402915383],
+    [82122385, 270038572, -214999195, -402915383],
+    [43834057, 244440232, 43834057, -473958332],
+    [-43834057, 473958332, -43834057, -244440232],
+    [-82122385, 402915383, 214999195, -270038572],
+    [214999195, 402915383, -82122385, -270038572],
+    [173938003, 361854190, 173938003, -311099765],
+    [311099765, -173938003, -361854190, -173938003],
+    [270038572, -214999195, -402915383, 82122385],
+    [270038572, 82122385, -402915383, -214999195],
+    [244440232, 43834057, -473958332, 43834057],
+    [473958332, -43834057, -244440232, -43834057],
+    [402915383, -82122385, -270038572, 214999195],
+    [402915383, 214999195, -270038572, -82122385],
+    [361854190, 173938003, -311099765, 173938003],
+    [311099765, -173938003, -173938003, -361854190],
+    [270038572, -214999195, 82122385, -402915383],
+    [270038572, 82122385, -214999195, -402915383],
+    [244440232, 43834057, 43834057, -473958332],
+    [473958332, -43834057, -43834057, -244440232],
+    [402915383, -82122385, 214999195, -270038572],
+    [402915383, 214999195, -82122385, -270038572],
+    [361854190, 173938003, 173938003, -311099765],
+    [18156661, 18156661, 18156661, 535949049],
+    [-24053090, -24053090, 273068491, 460984678],
+    [-24053090, 273068491, -24053090, 460984678],
+    [-65114282, 232007298, 232007298, 419923485],
+    [273068491, -24053090, -24053090, 460984678],
+    [232007298, -65114282, 232007298, 419923485],
+    [232007298, 232007298, -65114282, 419923485],
+    [203840704, 203840704, 203840704, 404446879],
+    [18156661, 18156661, 535949049, 18156661],
+    [-24053090, 24053090, 460984678, 273068491],
+    [-24053090, 273068491, 460984678, -24053090],
+    [-65114282, 232007298, 419923485, 232007298],
+    [273068491, -24053090, 460984678, -24053090],
+    [232007298, -65114282, 419923485, 232007298],
+    [232007298, 232007298, 419923485, -65114282],
+    [203840704, 203840704, 404446879, 203840704],
+    [18156661, 535949049, 18156661, 18156661],
+    [-24053090, 460984678, -24053090, 273068491],
+    [-24053090, 460984678, 273068491, -24053090],
+    [-65114282, 419923485, 232007298, 232007298],
+    [273068491, 460984678, -24053090, -24053090],
+    [232007298, 419923485, -65114282, 232007298],
+    [232007298, 419923485, 232007298, -65114282],
+    [203840704, 404446879, 203840704, 203840704],
+    [535949049, 18156661, 18156661, 18156661],
+    [460984678, -24053090, -24053090, 273068491],
+    [460984678, -24053090, 273068491, -24053090],
+    [419923485, -65114282, 232007298, 232007298],
+    [460984678, 273068491, -24053090, -24053090],
+    [419923485, 232007298, -65114282, 232007298],
+    [419923485, 232007298, 232007298, -65114282],
+    [404446879, 203840704, 203840704, 203840704],
+];
