@@ -121,7 +121,7 @@ pub mod prelude {
         CNoise, CubicValueNoise, MNoise, MixedMNoise, MixedTurbulence, OriginalPerlin, Periodic,
         Perlin, TabledPerlin, ValueNoise, WhiteNoise,
     };
-    pub use crate::simplex::{Flow, FlowSum, Simplex};
+    pub use crate::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
     pub use crate::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{

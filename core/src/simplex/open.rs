@@ -346,11 +346,19 @@ fn turn_f64<const D: usize>(p: [f64; D], improve: Improve, smooth: bool) -> [f64
     t
 }
 
+/// `v` rounded to `R`. Out of line with the `small` feature (fixed point's conversion is
+/// long, and a sample makes a dozen).
+#[cfg_attr(feature = "small", inline(never))]
+#[cfg_attr(not(feature = "small"), inline(always))]
+fn real<R: Real>(v: f64) -> R {
+    R::from_f64_nearest(v)
+}
+
 /// A turned coordinate's cell (its floor) and the offset within it, in `R`.
 #[inline(always)]
 fn floor_split<R: Real>(v: f64) -> (i32, R) {
     let (cell, frac) = Real::split(v);
-    (cell, R::from_f64_nearest(frac))
+    (cell, real::<R>(frac))
 }
 
 /// A turned coordinate's nearest integer (halves away from zero, as the reference's
@@ -359,10 +367,10 @@ fn floor_split<R: Real>(v: f64) -> (i32, R) {
 fn round_split<R: Real>(v: f64) -> (i32, R) {
     if v < 0.0 {
         let (cell, frac) = Real::split(0.5 - v);
-        (cell.wrapping_neg(), R::from_f64_nearest(0.5 - frac))
+        (cell.wrapping_neg(), real::<R>(0.5 - frac))
     } else {
         let (cell, frac) = Real::split(v + 0.5);
-        (cell, R::from_f64_nearest(frac - 0.5))
+        (cell, real::<R>(frac - 0.5))
     }
 }
 
@@ -382,13 +390,15 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
         Self {
             value: R::ZERO,
             gradient: [R::ZERO; D],
-            inverse_radius: R::from_f64_nearest(kernel.inverse_radius),
+            inverse_radius: real::<R>(kernel.inverse_radius),
         }
     }
 
     /// Adds the vertex at `cell` (hashed with `seed`) and offset `d` if it is within reach
-    /// (else computes no hash), and says whether it was.
-    #[inline(always)]
+    /// (else computes no hash), and says whether it was. Out of line with the `small`
+    /// feature: 3D OpenSimplex2S alone has 14 vertex sites.
+    #[cfg_attr(feature = "small", inline(never))]
+    #[cfg_attr(not(feature = "small"), inline(always))]
     fn add(&mut self, seed: i64, cell: [i64; D], d: [R; D]) -> bool {
         // |dₐ| < 2: the squares, their sum and its product with 1/r² ≤ 2 fit every type.
         let mut q = R::ZERO;
@@ -500,7 +510,7 @@ fn body_2d<R: Real, const G: bool>(seed: i64, t: [f64; 2], smooth: bool, sum: &m
     let (cy, fy) = floor_split::<R>(t[1]);
     let cell = [cx, cy];
     // The unskewed offset from the cell's base vertex; Σf < 2 and |U| < ¼.
-    let unskew = R::from_f64_nearest(UNSKEW_2D);
+    let unskew = real::<R>(UNSKEW_2D);
     let shift = unskew.mul_fraction(fx + fy);
     let d0 = [fx + shift, fy + shift];
     let mut corner =
@@ -662,8 +672,8 @@ fn smooth_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3,
 /// holds a contributing vertex (the reference's walk).
 #[inline(always)]
 fn fast_4d<R: Real, const G: bool>(seed: i64, t: [f64; 4], sum: &mut Sum<R, 4, G>) {
-    let step = R::from_f64_nearest(LATTICE_STEP_4D);
-    let unskew = R::from_f64_nearest(UNSKEW_4D_FAST);
+    let step = real::<R>(LATTICE_STEP_4D);
+    let unskew = real::<R>(UNSKEW_4D_FAST);
     let mut cell = [0i64; 4];
     let mut f = [R::ZERO; 4];
     let mut total = R::ZERO;
@@ -676,12 +686,12 @@ fn fast_4d<R: Real, const G: bool>(seed: i64, t: [f64; 4], sum: &mut Sum<R, 4, G
     // ⌊1.25 · Σf⌋: the first copy, 0 to 4.
     let mut start = 0;
     for k in 1..=4 {
-        if total >= R::from_f64_nearest(0.8 * f64::from(k)) {
+        if total >= real::<R>(0.8 * f64::from(k)) {
             start = k;
         }
     }
     let mut seed = seed.wrapping_add(i64::from(start).wrapping_mul(SEED_OFFSET_4D));
-    let back = R::from_f64_nearest(LATTICE_STEP_4D * f64::from(start));
+    let back = real::<R>(LATTICE_STEP_4D * f64::from(start));
     for x in &mut f {
         *x = *x - back;
     }
@@ -817,7 +827,7 @@ const fn smooth_4d_count() -> usize {
 /// it is within reach (the reference narrows the candidates with a table over 4⁴ sub-cells).
 #[inline(always)]
 fn smooth_4d<R: Real, const G: bool>(seed: i64, t: [f64; 4], sum: &mut Sum<R, 4, G>) {
-    let unskew = R::from_f64_nearest(UNSKEW_4D_SMOOTH);
+    let unskew = real::<R>(UNSKEW_4D_SMOOTH);
     let mut cell = [0i32; 4];
     let mut f = [R::ZERO; 4];
     for a in 0..4 {
@@ -872,7 +882,10 @@ impl Body<4> for Dim {
 /// and the gradient taken from the offsets' space back to the input's by the chain rule
 /// (`∇ₚ = Jᵀ ∇_d` for the linear map `J` from the input to the unskewed offsets: the turn,
 /// then in 2D and 4D the lattice's unskew).
-#[inline(always)]
+// Out of line with the `small` feature: each entry point of each number type would otherwise
+// hold its own copy of the lattice body (16 KB of the demo's wasm module).
+#[cfg_attr(feature = "small", inline(never))]
+#[cfg_attr(not(feature = "small"), inline(always))]
 fn evaluate<R: Real, const D: usize, const G: bool>(
     seed: i64,
     improve: Improve,
@@ -885,7 +898,7 @@ where
     let kernel = if smooth { &SMOOTH[D] } else { &FAST[D] };
     let mut sum = Sum::<R, D, G>::new(kernel);
     Dim::body(seed, turn(p, improve, smooth), smooth, &mut sum);
-    let scale = R::from_f64_nearest(kernel.scale);
+    let scale = real::<R>(kernel.scale);
     // |Σ| ≤ the bound / scale: the products stay within the bound (below 70).
     let value = sum.value.mul_rn(scale).canonical();
     let mut gradient = [R::ZERO; D];
@@ -898,7 +911,7 @@ where
             let column = offsets_of(unit, improve, smooth);
             let mut g = R::ZERO;
             for (&d, &j) in sum.gradient.iter().zip(&column) {
-                g = g.saturating_add(d.mul_rn(R::from_f64_nearest(j)));
+                g = g.saturating_add(d.mul_rn(real::<R>(j)));
             }
             *out = g.canonical();
         }
