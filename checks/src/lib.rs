@@ -17,7 +17,7 @@ use bandnoise::fractal::{Kind, Octaves};
 use bandnoise::hash::{CellHash, CellRng, Poisson};
 use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
 use bandnoise::lattice::{MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
-use bandnoise::simplex::{Flow, FlowSum, Simplex};
+use bandnoise::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
@@ -270,8 +270,9 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 
 /// Checksums of what is not a noise description: Gabor surface noise and filtering, projected
 /// sampling, wavelet gradients, filtering and infinite noise, the cell hash and generator, the
-/// kernels' `exp` and `cos`, and [`TabledPerlin`] (Perlin's values through its table).
-const OTHER: [&str; 12] = [
+/// kernels' `exp` and `cos`, [`TabledPerlin`] (Perlin's values through its table), and
+/// OpenSimplex2 and OpenSimplex2S (not yet in the description).
+const OTHER: [&str; 13] = [
     "gabor surface",
     "gabor filtered",
     "multiband projected",
@@ -284,6 +285,7 @@ const OTHER: [&str; 12] = [
     "tabled perlin 2D",
     "tabled perlin 3D",
     "simplex gradients, curl, flow, warp, mixed mnoise",
+    "opensimplex2, opensimplex2s",
 ];
 
 /// Gabor surface noise (isotropic: each impulse's direction turned into the plane) and Gabor
@@ -404,6 +406,33 @@ fn all<R: Bits>(out: &mut [u32]) {
     push(checksum::<R, 2>(&tabled, 200));
     push(checksum::<R, 3>(&tabled, 200));
     push(vector_checksum::<R>());
+    push(open_simplex_checksum::<R>());
+}
+
+/// OpenSimplex2 and OpenSimplex2S in 2D–4D and each orientation (values; 3D gradients, whose
+/// chain rule runs through the turn). Out of line, for the Cortex-M0's stack.
+#[inline(never)]
+fn open_simplex_checksum<R: Bits>() -> u32 {
+    let mut f = Fnv::new();
+    for (k, improve) in [Improve::Standard, Improve::XY, Improve::XZ]
+        .into_iter()
+        .enumerate()
+    {
+        let fast = OpenSimplex2::new(-3 - k as i64).improving(improve);
+        let smooth = OpenSimplex2S::new(k as i64 * 0x1234_5678_9ABC).improving(improve);
+        for i in 0..POINTS / 8 {
+            let p = point::<R, 4>(i + 64 * k as u32, 100);
+            f.add(fast.sample([p[0], p[1]]).bits());
+            f.add(fast.sample(p).bits());
+            f.add(smooth.sample([p[0], p[1]]).bits());
+            f.add(smooth.sample(p).bits());
+            let (v, g) = fast.sample_with_gradient([p[0], p[1], p[2]]);
+            g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+            let (v, g) = smooth.sample_with_gradient([p[0], p[1], p[2]]);
+            g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
+        }
+    }
+    f.0
 }
 
 /// Simplex noise's gradients (2D–4D, each value and slope), curl noise (2D over simplex

@@ -9,6 +9,8 @@
 //! path (`sample_lanes`) equals `sample` bit for bit. Periodic noise with arbitrary periods:
 //! refused outside 1..=65536 (and for simplex noise), otherwise within the bound and periodic
 //! bit for bit in fixed point. Curl noise over simplex and Perlin noise: finite, bounded.
+//! OpenSimplex2 and OpenSimplex2S (seed and orientation from the input): within their bounds,
+//! batches equal to points, gradients finite.
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -16,7 +18,7 @@ use bandnoise::batch::LANES;
 use bandnoise::cellular::{Metric, Output};
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
-use bandnoise::simplex::{Flow, Simplex};
+use bandnoise::simplex::{Flow, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::Distribution;
@@ -225,6 +227,31 @@ fn flow(seed: u32, angle: f32, floats: [f32; 4], fixed: [I16F16; 4], exact: f32)
     );
 }
 
+/// OpenSimplex2 and OpenSimplex2S in 1D–4D for a seed and orientation from the input: within
+/// their bounds in both number types, the batch path equal to the point path, the gradient
+/// finite. (Fixed point is not compared with f32: both can fall on either side of the
+/// reference's small jumps.)
+fn open_simplex(seed: u32, bits: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
+    let improve = [Improve::Standard, Improve::XY, Improve::XZ][bits as usize % 3];
+    let seed = i64::from(seed) << 32 | i64::from(bits);
+    let fast = OpenSimplex2::new(seed).improving(improve);
+    let smooth = OpenSimplex2S::new(seed).improving(improve);
+    dim::<1, _>(&fast, floats, fixed, 0.0);
+    dim::<2, _>(&fast, floats, fixed, 0.0);
+    dim::<3, _>(&fast, floats, fixed, 0.0);
+    dim::<4, _>(&fast, floats, fixed, 0.0);
+    dim::<1, _>(&smooth, floats, fixed, 0.0);
+    dim::<2, _>(&smooth, floats, fixed, 0.0);
+    dim::<3, _>(&smooth, floats, fixed, 0.0);
+    dim::<4, _>(&smooth, floats, fixed, 0.0);
+    let (v, g) = fast.sample_with_gradient(floats);
+    let (w, h) = smooth.sample_with_gradient([floats[0], floats[1], floats[2]]);
+    assert!(
+        [v, w].iter().chain(&g).chain(&h).all(|c| c.is_finite()),
+        "{floats:?}"
+    );
+}
+
 /// Curl noise over simplex noise (2D) and three Perlin noises (3D): finite, and in fixed
 /// point bounded by the potentials' gradients (a few units per cell).
 fn curl(seed: u32, floats: [f32; 4], fixed: [I16F16; 4]) {
@@ -283,6 +310,7 @@ fuzz_target!(|input: Input| {
         warp(input.seed, f32::from_bits(input.periods[1]), floats, fixed);
         let angle = f32::from_bits(input.periods[2]);
         flow(input.seed, angle, floats, fixed, tolerance);
+        open_simplex(input.seed, input.periods[0], floats, fixed);
     } else if base == Base::Cellular || values {
         assert!(spec.with_period(&input.periods).is_err());
     } else {

@@ -1,5 +1,5 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, flow noise and its fBm, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
+//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, OpenSimplex2 and OpenSimplex2S, flow noise and its fBm, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
 //! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
 //! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
 //! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
@@ -22,7 +22,7 @@ use bandnoise::lattice::{
     Perlin, TabledPerlin, ValueNoise, WhiteNoise,
 };
 use bandnoise::levels::Levels;
-use bandnoise::simplex::{Flow, FlowSum, Simplex};
+use bandnoise::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
@@ -61,6 +61,18 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     add(MixedTurbulence::<3>::new(2).sample_with_gradient(p).1[3]);
     all_dims!(Simplex::new(black_box(1)));
     add(Simplex::new(2).sample_with_gradient(p).1[3]);
+    // Any seed and orientation (the optimiser cannot tell which).
+    let improve = [Improve::Standard, Improve::XY, Improve::XZ][black_box(2usize) % 3];
+    all_dims!(OpenSimplex2::new(black_box(-1)).improving(improve));
+    all_dims!(OpenSimplex2S::new(black_box(-1)).improving(improve));
+    add(OpenSimplex2::new(2)
+        .improving(improve)
+        .sample_with_gradient(p)
+        .1[3]);
+    add(OpenSimplex2S::new(2)
+        .improving(improve)
+        .sample_with_gradient(p)
+        .1[3]);
     if let Ok(flow) = Flow::new(black_box(1)).with_angle(black_box(0.3)) {
         add(flow.sample([p[0], p[1]]));
         add(flow.sample_with_gradient([p[0], p[1]]).1[1]);
