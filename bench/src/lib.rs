@@ -15,7 +15,7 @@ use bandnoise::cellular::Cellular;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise};
-use bandnoise::simplex::{Flow, Simplex};
+use bandnoise::simplex::{Flow, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
 
@@ -61,7 +61,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 27] = [
+pub const FUNCTIONS: [&str; 30] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -87,6 +87,9 @@ pub const FUNCTIONS: [&str; 27] = [
     "simplex-2d",
     "simplex-3d",
     "flow-2d",
+    "opensimplex2-2d",
+    "opensimplex2-3d",
+    "opensimplex2s-3d",
     "cellular-2d",
     "cellular-3d",
 ];
@@ -301,6 +304,27 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("simplex-3d", "libnoise") => {
             let n = libnoise::Source::<3>::simplex(0);
             l.peer_f64::<3>(move |p| libnoise::Generator::sample(&n, p))
+        }
+        // OpenSimplex2 and 2S: FastNoise Lite's are the same algorithms in their standard
+        // orientation (its own hash and gradient sets), computed in f32.
+        ("opensimplex2-2d", "bandnoise") => l.point::<_, 2>(OpenSimplex2::new(0)),
+        ("opensimplex2-2d", "bandnoise-batch") => l.batch::<_, 2>(OpenSimplex2::new(0)),
+        ("opensimplex2-3d", "bandnoise") => l.point::<_, 3>(OpenSimplex2::new(0)),
+        ("opensimplex2-3d", "bandnoise-batch") => l.batch::<_, 3>(OpenSimplex2::new(0)),
+        ("opensimplex2s-3d", "bandnoise") => l.point::<_, 3>(OpenSimplex2S::new(0)),
+        ("opensimplex2s-3d", "bandnoise-batch") => l.batch::<_, 3>(OpenSimplex2S::new(0)),
+        ("opensimplex2-2d", "fastnoise-lite") => {
+            let n = fast(NoiseType::OpenSimplex2, None);
+            l.peer2(move |x, y| n.get_noise_2d(x, y))
+        }
+        ("opensimplex2-3d" | "opensimplex2s-3d", "fastnoise-lite") => {
+            let kind = if function == "opensimplex2-3d" {
+                NoiseType::OpenSimplex2
+            } else {
+                NoiseType::OpenSimplex2S
+            };
+            let n = fast(kind, None);
+            l.peer2(move |x, y| n.get_noise_3d(x, y, Z))
         }
         // Cellular noise: F1, Euclidean, jitter 1 in every implementation (the peers'
         // defaults differ: FastNoise Lite's is the squared distance, `noise`'s the cell value).

@@ -254,7 +254,8 @@ fn render_curl(o: &Options) -> Result<(), String> {
 
 /// Flow noise (Perlin and Neyret 2001) at three angles of its rotating gradients (the
 /// features swirl in place) and its fBm with pseudo-advection, domain warping (Lewis's stochastic deformation) of Perlin noise
-/// by two simplex noises, and Olano's 4-octave turbulence of mNoise (3D, the slice z = 0.37).
+/// by two simplex noises, OpenSimplex2 and OpenSimplex2S, and Olano's 4-octave turbulence of
+/// mNoise (3D, the slice z = 0.37).
 fn render_flow_and_warp(o: &Options) -> Result<(), String> {
     for (name, angle) in [("0", 0.0), ("0.125", 0.125), ("0.25", 0.25)] {
         let flow = Flow::new(o.seed)
@@ -272,6 +273,15 @@ fn render_flow_and_warp(o: &Options) -> Result<(), String> {
     let field = Components::new([Simplex::new(o.seed ^ 1), Simplex::new(o.seed ^ 2)]);
     let warp = Warp::new(Perlin::new(o.seed), field, 1.0).map_err(|e| e.to_string())?;
     render_with(o, "warp-perlin-2d", 1.0, 1.0, |p, _| warp.sample(p))?;
+    // OpenSimplex2 and OpenSimplex2S (2D, and 3D turned for a vertical z: the slice z = 0.37).
+    let fast = OpenSimplex2::new(i64::from(o.seed));
+    let smooth = OpenSimplex2S::new(i64::from(o.seed));
+    render_with(o, "opensimplex2-2d", 1.0, 1.0, |p, _| fast.sample(p))?;
+    render_with(o, "opensimplex2s-2d", 1.0, 1.0, |p, _| smooth.sample(p))?;
+    let terrain = smooth.improving(Improve::XY);
+    render_with(o, "opensimplex2s-3d-improve-xy", 1.0, 1.0, |p, _| {
+        terrain.sample([p[0], p[1], 0.37])
+    })?;
     let turbulence = MixedTurbulence::<4>::new(o.seed);
     // |n| ≥ 0 with mean about 0.35: map [0, 1.2] to black..white.
     render_with(o, "mnoise-turbulence-3d", 0.6, 1.0, |p, _| {

@@ -349,7 +349,7 @@ fn turn_f64<const D: usize>(p: [f64; D], improve: Improve, smooth: bool) -> [f64
 /// `v` rounded to `R`. Out of line with the `small` feature (fixed point's conversion is
 /// long, and a sample makes a dozen).
 #[cfg_attr(feature = "small", inline(never))]
-#[cfg_attr(not(feature = "small"), inline(always))]
+#[cfg_attr(not(feature = "small"), inline)]
 fn real<R: Real>(v: f64) -> R {
     R::from_f64_nearest(v)
 }
@@ -398,7 +398,7 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
     /// (else computes no hash), and says whether it was. Out of line with the `small`
     /// feature: 3D OpenSimplex2S alone has 14 vertex sites.
     #[cfg_attr(feature = "small", inline(never))]
-    #[cfg_attr(not(feature = "small"), inline(always))]
+    #[cfg_attr(not(feature = "small"), inline)]
     fn add(&mut self, seed: i64, cell: [i64; D], d: [R; D]) -> bool {
         // |dₐ| < 2: the squares, their sum and its product with 1/r² ≤ 2 fit every type.
         let mut q = R::ZERO;
@@ -885,7 +885,7 @@ impl Body<4> for Dim {
 // Out of line with the `small` feature: each entry point of each number type would otherwise
 // hold its own copy of the lattice body (16 KB of the demo's wasm module).
 #[cfg_attr(feature = "small", inline(never))]
-#[cfg_attr(not(feature = "small"), inline(always))]
+#[cfg_attr(not(feature = "small"), inline)]
 fn evaluate<R: Real, const D: usize, const G: bool>(
     seed: i64,
     improve: Improve,
