@@ -181,58 +181,27 @@ fn reproduce<N, const D: usize>(
     }
 }
 
-#[test]
-fn fast_2d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2",
-        |s, i| OpenSimplex2::new(s).improving(i),
-        |i| reference_2d(false, i),
-    );
+/// One test per variant and dimension, each over every orientation and seed.
+macro_rules! reproduces {
+    ($($test:ident: $noise:ident, $reference:ident, $smooth:expr;)*) => {$(
+        #[test]
+        fn $test() {
+            reproduce(
+                stringify!($noise),
+                |s, i| $noise::new(s).improving(i),
+                |i| $reference($smooth, i),
+            );
+        }
+    )*};
 }
 
-#[test]
-fn fast_3d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2",
-        |s, i| OpenSimplex2::new(s).improving(i),
-        |i| reference_3d(false, i),
-    );
-}
-
-#[test]
-fn fast_4d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2",
-        |s, i| OpenSimplex2::new(s).improving(i),
-        |i| reference_4d(false, i),
-    );
-}
-
-#[test]
-fn smooth_2d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2S",
-        |s, i| OpenSimplex2S::new(s).improving(i),
-        |i| reference_2d(true, i),
-    );
-}
-
-#[test]
-fn smooth_3d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2S",
-        |s, i| OpenSimplex2S::new(s).improving(i),
-        |i| reference_3d(true, i),
-    );
-}
-
-#[test]
-fn smooth_4d_reproduces_the_reference() {
-    reproduce(
-        "OpenSimplex2S",
-        |s, i| OpenSimplex2S::new(s).improving(i),
-        |i| reference_4d(true, i),
-    );
+reproduces! {
+    fast_2d_reproduces_the_reference: OpenSimplex2, reference_2d, false;
+    fast_3d_reproduces_the_reference: OpenSimplex2, reference_3d, false;
+    fast_4d_reproduces_the_reference: OpenSimplex2, reference_4d, false;
+    smooth_2d_reproduces_the_reference: OpenSimplex2S, reference_2d, true;
+    smooth_3d_reproduces_the_reference: OpenSimplex2S, reference_3d, true;
+    smooth_4d_reproduces_the_reference: OpenSimplex2S, reference_4d, true;
 }
 
 /// `f32` and I16F16 follow `f64` (the number types differ only in the offsets' rounding and
@@ -420,37 +389,14 @@ fn continuity_is_the_reference_s() {
         ours
     }
     let (fast, smooth) = (OpenSimplex2::new(0), OpenSimplex2S::new(0));
+    let standard = Improve::Standard;
     let jumps = [
-        both(
-            "OpenSimplex2",
-            &fast,
-            reference_2d(false, Improve::Standard).0,
-        ),
-        both(
-            "OpenSimplex2",
-            &fast,
-            reference_3d(false, Improve::Standard).0,
-        ),
-        both(
-            "OpenSimplex2",
-            &fast,
-            reference_4d(false, Improve::Standard).0,
-        ),
-        both(
-            "OpenSimplex2S",
-            &smooth,
-            reference_2d(true, Improve::Standard).0,
-        ),
-        both(
-            "OpenSimplex2S",
-            &smooth,
-            reference_3d(true, Improve::Standard).0,
-        ),
-        both(
-            "OpenSimplex2S",
-            &smooth,
-            reference_4d(true, Improve::Standard).0,
-        ),
+        both("OpenSimplex2", &fast, reference_2d(false, standard).0),
+        both("OpenSimplex2", &fast, reference_3d(false, standard).0),
+        both("OpenSimplex2", &fast, reference_4d(false, standard).0),
+        both("OpenSimplex2S", &smooth, reference_2d(true, standard).0),
+        both("OpenSimplex2S", &smooth, reference_3d(true, standard).0),
+        both("OpenSimplex2S", &smooth, reference_4d(true, standard).0),
     ];
     // The fixed vertex sets: 3D and 4D OpenSimplex2, 3D OpenSimplex2S; the others take
     // every vertex in reach.

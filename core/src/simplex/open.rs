@@ -167,6 +167,16 @@ pub enum Improve {
     XZ,
 }
 
+impl Improve {
+    /// The isotropic plane's axes `u`, `v` and the different axis `h`, for `XY` and `XZ`.
+    const fn axes(self) -> (usize, usize, usize) {
+        match self {
+            Improve::XZ => (0, 2, 1),
+            _ => (0, 1, 2),
+        }
+    }
+}
+
 /// OpenSimplex2 ("fast"): simplex noise in 2D, two closest vertices per cubic lattice on the
 /// body-centred cubic lattice in 3D, five lattice copies in 4D (module docs), reproducing the
 /// `opensimplex2` crate's `fast` module.
@@ -295,12 +305,7 @@ fn turn_f64<const D: usize>(p: [f64; D], improve: Improve, smooth: bool) -> [f64
             }
         }
         (3, Improve::XY | Improve::XZ) => {
-            // The isotropic plane's axes `u`, `v` and the different axis `h`.
-            let (u, v, h) = if improve == Improve::XY {
-                (0, 1, 2)
-            } else {
-                (0, 2, 1)
-            };
+            let (u, v, h) = improve.axes();
             let uv = p[u] + p[v];
             let s2 = uv * -0.211_324_865_405_187_13;
             let hh = p[h] * 0.577_350_269_189_626;
@@ -322,11 +327,7 @@ fn turn_f64<const D: usize>(p: [f64; D], improve: Improve, smooth: bool) -> [f64
             }
         }
         (4, Improve::XY | Improve::XZ) => {
-            let (u, v, h) = if improve == Improve::XY {
-                (0, 1, 2)
-            } else {
-                (0, 2, 1)
-            };
+            let (u, v, h) = improve.axes();
             let uv = p[u] + p[v];
             let s2 = uv * -0.211_324_865_405_187;
             let hh = p[h] * 0.288_675_134_594_812_9;
@@ -782,20 +783,25 @@ const fn nearest(v: [i32; 4]) -> f64 {
     best
 }
 
-/// The skewed offsets in `{−1, 0, 1, 2}⁴` of the vertices that some point of a cell has within
-/// reach of 4D OpenSimplex2S's kernel (`r² = 0.8`), in the order of their base-4 codes.
+/// The skewed offset in `{−1, 0, 1, 2}⁴` with base-4 code `code` (`0..256`), if some point of
+/// a cell has it within reach of 4D OpenSimplex2S's kernel (`r² = 0.8`).
+const fn candidate(code: i32) -> Option<[i32; 4]> {
+    let v = [
+        code % 4 - 1,
+        code / 4 % 4 - 1,
+        code / 16 % 4 - 1,
+        code / 64 - 1,
+    ];
+    if nearest(v) < 0.8 { Some(v) } else { None }
+}
+
+/// Every [`candidate`], in the order of their codes.
 const SMOOTH_4D: [[i8; 4]; smooth_4d_count()] = {
     let mut out = [[0i8; 4]; smooth_4d_count()];
     let mut n = 0;
     let mut code = 0;
     while code < 256 {
-        let v = [
-            code % 4 - 1,
-            code / 4 % 4 - 1,
-            code / 16 % 4 - 1,
-            code / 64 - 1,
-        ];
-        if nearest(v) < 0.8 {
+        if let Some(v) = candidate(code) {
             out[n] = [v[0] as i8, v[1] as i8, v[2] as i8, v[3] as i8];
             n += 1;
         }
@@ -809,13 +815,7 @@ const fn smooth_4d_count() -> usize {
     let mut n = 0;
     let mut code = 0;
     while code < 256 {
-        let v = [
-            code % 4 - 1,
-            code / 4 % 4 - 1,
-            code / 16 % 4 - 1,
-            code / 64 - 1,
-        ];
-        if nearest(v) < 0.8 {
+        if candidate(code).is_some() {
             n += 1;
         }
         code += 1;
