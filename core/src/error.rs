@@ -139,6 +139,28 @@ pub enum Error {
     /// A Gabor setting (frequency, bandwidth, direction, orientation, envelope, magnitude)
     /// asked for another noise.
     NotGabor(&'static str),
+    /// A colour map with too few or too many colours (see
+    /// [`ColorMap::new`](crate::texture::ColorMap::new)).
+    ColorCount {
+        /// The number of colours given.
+        count: usize,
+        /// The fewest the interpolation needs.
+        min: usize,
+        /// The most a map takes.
+        max: usize,
+    },
+    /// A texture setting out of its range: its name, the value given, and the range (see
+    /// [`texture`](crate::texture)).
+    TextureSetting {
+        /// The setting.
+        name: &'static str,
+        /// The value given.
+        value: f32,
+        /// The smallest value allowed.
+        min: f32,
+        /// The largest value allowed.
+        max: f32,
+    },
     /// A batch output buffer (or a point slice) whose length does not match the points asked
     /// for.
     BufferLength {
@@ -275,6 +297,24 @@ impl fmt::Display for Error {
                 f,
                 "{noise} noise has no Gabor settings (frequency, bandwidth, direction, \
                  orientation, envelope and magnitude are for Gabor noise)"
+            ),
+            Error::ColorCount { count, min, max } => {
+                write!(
+                    f,
+                    "{count} colours given, a colour map needs {min} to {max}"
+                )
+            }
+            Error::TextureSetting {
+                name,
+                value,
+                min,
+                max,
+            } => write!(
+                f,
+                "texture {name} {} must be finite and in [{}, {}]",
+                Shortest(*value),
+                Shortest(*min),
+                Shortest(*max)
             ),
             Error::BufferLength { expected, found } => {
                 write!(f, "buffer of length {found} given, {expected} needed")

@@ -26,6 +26,8 @@
 //! * [`wiener`]: Lewis's Wiener-interpolated lattice noise.
 //! * [`wavelet`]: Cook and DeRose's wavelet noise: band-limited bands over tiles computed at
 //!   compile time, projected onto surfaces, summed into multiband noise.
+//! * [`texture`]: pbrt's windy waves, wrinkled, marble and polka dots, Lewis's solid wood,
+//!   Olano's wood and marble, with colour maps.
 //! * [`batch`]: grids and point arrays in one call, vectorised, bit-identical to `sample`.
 //! * [`levels`]: noise values as `u8`, `u16` and `i16` for LED, display and audio code, with
 //!   no division per sample.
@@ -103,6 +105,7 @@ mod real;
 pub mod simplex;
 pub mod spec;
 mod special;
+pub mod texture;
 pub mod vector;
 pub mod wavelet;
 pub mod wiener;
@@ -122,6 +125,7 @@ pub mod prelude {
         Perlin, TabledPerlin, ValueNoise, WhiteNoise,
     };
     pub use crate::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
+    pub use crate::texture::{ColorMap, Marble, PolkaDots, Texture, Windy, Wood, Wrinkled};
     pub use crate::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
     pub use crate::wavelet::{Bands, Distribution, Multiband, TILE2, TILE3, Wavelet};
     pub use crate::{

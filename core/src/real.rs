@@ -68,12 +68,13 @@ pub(crate) mod sealed {
         /// coordinate exactly to 2⁻¹⁶ in 64-bit integers (`⌊Σx·F⌋` in its bits), so no
         /// coordinate overflows: a skewed cell beyond I16F16's range is still a cell.
         fn skew_split<const D: usize>(p: [Self; D], skew: i32) -> ([i32; D], [Self; D]);
-        /// The Euclidean length `√(Σ vₐ²)` of a vector whose components are below 8 in
-        /// magnitude (cellular noise's offsets). Floats sum the squares left to right from 0
-        /// and take [`Real::sqrt`](crate::Real::sqrt). Fixed point sums the exact squares of
-        /// the bits (2⁻³² units, in `u64`) and takes their integer square root (rounded down),
-        /// so a short vector keeps its length where rounded squares would lose it: a length
-        /// of 2⁻⁹ has a square below 2⁻¹⁶.
+        /// The Euclidean length `√(Σ vₐ²)` (cellular noise's offsets, the wood texture's
+        /// radius). Floats sum the squares left to right from 0 and take
+        /// [`Real::sqrt`](crate::Real::sqrt) (∞ where the squares overflow). Fixed point sums
+        /// the exact squares of the bits (2⁻³² units, in `u64`, saturating) and takes their
+        /// integer square root (rounded to nearest, saturating at `MAX`), so a short vector
+        /// keeps its length where rounded squares would lose it (a length of 2⁻⁹ has a
+        /// square below 2⁻¹⁶) and a long one cannot overflow.
         fn norm<const D: usize>(v: [Self; D]) -> Self;
         /// `v` rounded to the type (nearest; fixed point saturates, NaN is 0), for offsets
         /// computed in `f64` (OpenSimplex2's rotated lattices).
@@ -227,13 +228,14 @@ pub(crate) mod sealed {
         }
         #[inline]
         fn norm<const D: usize>(v: [Self; D]) -> Self {
-            // Each |bits| < 2¹⁹: the sum of squares is below 2⁴⁰; its root below 2²⁰.
+            // Each square is at most 2⁶²; the sum saturates (four of them reach 2⁶⁴), and a
+            // root beyond I16F16's range saturates at MAX.
             let mut sum = 0u64;
             for x in v {
                 let b = x.to_bits().unsigned_abs() as u64;
-                sum += b * b;
+                sum = sum.saturating_add(b * b);
             }
-            I16F16::from_bits(super::isqrt(sum) as i32)
+            I16F16::from_bits(super::isqrt(sum).min(i32::MAX as u64) as i32)
         }
     }
 }

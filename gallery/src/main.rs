@@ -139,9 +139,18 @@ fn render_wavelet_filtering(o: &Options) -> Result<(), String> {
 }
 
 fn write_png(path: &Path, size: u32, pixels: &[u8]) -> Result<(), String> {
+    write_png_as(path, size, pixels, png::ColorType::Grayscale)
+}
+
+fn write_png_as(
+    path: &Path,
+    size: u32,
+    pixels: &[u8],
+    color: png::ColorType,
+) -> Result<(), String> {
     let file = File::create(path).map_err(|e| format!("{}: {e}", path.display()))?;
     let mut encoder = png::Encoder::new(BufWriter::new(file), size, size);
-    encoder.set_color(png::ColorType::Grayscale);
+    encoder.set_color(color);
     encoder.set_depth(png::BitDepth::Eight);
     let mut writer = encoder.write_header().map_err(|e| e.to_string())?;
     writer.write_image_data(pixels).map_err(|e| e.to_string())?;
@@ -204,7 +213,57 @@ fn run(o: &Options) -> Result<(), String> {
     render_curl(o)?;
     render_flow_and_warp(o)?;
     render_cellular_variants(o)?;
+    render_textures(o)?;
     render_wavelet_filtering(o)
+}
+
+/// Writes the colour `f(p)` over the grid (the same grid as [`render_with`]) as an RGB PNG.
+fn render_rgb(o: &Options, name: &str, f: impl Fn([f32; 2]) -> [u8; 3]) -> Result<(), String> {
+    let n = o.size as usize;
+    let step = o.scale / o.size as f32;
+    let centre = 0.5 * o.scale;
+    let mut pixels = Vec::with_capacity(3 * n * n);
+    for j in 0..n {
+        for i in 0..n {
+            let at = |k: usize| centre + (k as f32 - 0.5 * n as f32) * step;
+            pixels.extend_from_slice(&f([at(i), at(j)]));
+        }
+    }
+    write_png_as(
+        &o.out.join(format!("{name}.png")),
+        o.size,
+        &pixels,
+        png::ColorType::Rgb,
+    )
+}
+
+/// The textures (`bandnoise::texture`) in colour, in `f32` and (`-fixed`) in I16F16: pbrt's
+/// windy waves, wrinkled, marble and polka dots, Lewis's wood, Olano's wood and marble, in 2D
+/// (the plane z = 0 of the solid textures); the wood's trunk (the z axis) is at the image's
+/// centre.
+fn render_textures(o: &Options) -> Result<(), String> {
+    render_texture(o, "texture-windy", &Windy::new(o.seed), [0.0; 2])?;
+    render_texture(o, "texture-wrinkled", &Wrinkled::new(o.seed), [0.0; 2])?;
+    render_texture(o, "texture-marble-pbrt", &Marble::new(o.seed), [0.0; 2])?;
+    render_texture(o, "texture-marble-olano", &Marble::olano(o.seed), [0.0; 2])?;
+    render_texture(o, "texture-polka-dots", &PolkaDots::new(o.seed), [0.0; 2])?;
+    let trunk = [0.5 * o.scale; 2];
+    render_texture(o, "texture-wood-lewis", &Wood::new(o.seed), trunk)?;
+    render_texture(o, "texture-wood-olano", &Wood::olano(o.seed), trunk)
+}
+
+/// One texture in `f32` and in I16F16, moved by `-origin`.
+fn render_texture<T: Texture<f32, 2> + Texture<I16F16, 2>>(
+    o: &Options,
+    name: &str,
+    texture: &T,
+    origin: [f32; 2],
+) -> Result<(), String> {
+    let at = |p: [f32; 2]| [p[0] - origin[0], p[1] - origin[1]];
+    render_rgb(o, name, |p| texture.color_rgb8(at(p)))?;
+    render_rgb(o, &format!("{name}-fixed"), |p| {
+        texture.color_rgb8(at(p).map(I16F16::from_num))
+    })
 }
 
 /// Samples `noise` over the grid mapping `[0, top]` to black..white (cellular distances).

@@ -11,17 +11,18 @@ mod footprint;
 use crate::batch::LANES;
 use crate::{Error, FilteredNoise, I16F16, Noise, NoiseGradient, Real};
 pub(crate) use footprint::footprint_len2;
+
 use footprint::octaves_for;
 
 /// A validated setting: its `f32` value, and that value rounded once to I16F16.
 #[derive(Clone, Copy, Debug, PartialEq)]
-struct Setting {
+pub(crate) struct Setting {
     f: f32,
     q: I16F16,
 }
 
 impl Setting {
-    fn new(f: f32) -> Self {
+    pub(crate) fn new(f: f32) -> Self {
         Self {
             f,
             q: I16F16::from_f32(f),
@@ -33,9 +34,14 @@ impl Setting {
         self.f.abs().max(self.q.to_f32().abs())
     }
 
+    /// The setting as given.
+    pub(crate) fn value(self) -> f32 {
+        self.f
+    }
+
     /// The setting in the number type `R`.
     #[inline]
-    fn get<R: Real>(self) -> R {
+    pub(crate) fn get<R: Real>(self) -> R {
         R::from_setting(self.f, self.q)
     }
 }
@@ -118,8 +124,16 @@ impl Octaves {
 
 impl Default for Octaves {
     fn default() -> Self {
+        Self::pbrt(6)
+    }
+}
+
+impl Octaves {
+    /// pbrt's octaves (lacunarity 1.99, gain 0.5), `count` of them: `1 ≤ count ≤ 30` is the
+    /// caller's to keep (the textures' fixed counts).
+    pub(crate) fn pbrt(count: u32) -> Self {
         Self {
-            count: 6,
+            count,
             lacunarity: Setting::new(1.99),
             gain: Setting::new(0.5),
         }
