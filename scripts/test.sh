@@ -108,5 +108,16 @@ step "gallery renders"
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png
 
+step "the README's texture images are what the code renders"
+cargo run --release -p bandnoise-gallery -- --textures --size 128 --out target/gallery-textures
+for f in docs/textures/*.png; do
+    cmp "$f" "target/gallery-textures/$(basename "$f")" || {
+        echo "error: $f differs from the gallery's rendering; re-render with" \
+            "cargo run --release -p bandnoise-gallery -- --textures --size 128 --out docs/textures" >&2
+        exit 1
+    }
+done
+test "$(ls docs/textures/*.png | wc -l)" = "$(ls target/gallery-textures/*.png | wc -l)"
+
 echo
 echo "all bandnoise tests passed"

@@ -1,8 +1,9 @@
-//! Renders every bandnoise noise to grey-scale PNG files, so a newcomer can see them.
+//! Renders every bandnoise noise to grey-scale PNG files (the textures in colour), so a
+//! newcomer can see them.
 //!
 //! ```text
 //! cargo run --release -p bandnoise-gallery -- [--size N] [--scale S] [--seed K] [--out DIR]
-//!     [--spec TEXT]
+//!     [--spec TEXT] [--textures]
 //! ```
 //!
 //! Each image samples a noise on an `N × N` grid covering `S` lattice cells per side and maps
@@ -10,8 +11,9 @@
 //! from the runtime description (`bandnoise::spec`): every base in 2D, in `f32` (`NAME-2d.png`)
 //! and in fixed point (`NAME-2d-fixed.png`), then fractal sums and periodic tiles written in
 //! its text form; then one wavelet band with each tiling, wavelet noise plain and filtered by
-//! the pixel's footprint, and infinite wavelet noise at four zooms. `--spec TEXT` renders one description of your own instead
-//! (`spec.png`).
+//! the pixel's footprint, infinite wavelet noise at four zooms, and the textures in colour.
+//! `--spec TEXT` renders one description of your own instead (`spec.png`); `--textures` only
+//! the textures (the README's images are `--textures --size 128`, in `docs/textures/`).
 
 use std::fs::{self, File};
 use std::io::BufWriter;
@@ -27,6 +29,7 @@ struct Options {
     seed: u32,
     out: PathBuf,
     spec: Option<Spec>,
+    textures: bool,
 }
 
 fn parse_args() -> Result<Options, String> {
@@ -36,6 +39,7 @@ fn parse_args() -> Result<Options, String> {
         seed: 0,
         out: PathBuf::from("gallery-out"),
         spec: None,
+        textures: false,
     };
     let mut args = std::env::args().skip(1);
     while let Some(flag) = args.next() {
@@ -59,10 +63,11 @@ fn parse_args() -> Result<Options, String> {
                 let text = value()?;
                 o.spec = Some(text.parse().map_err(|e| format!("--spec {text:?}: {e}"))?);
             }
+            "--textures" => o.textures = true,
             "-h" | "--help" => {
                 return Err(
                     "usage: bandnoise-gallery [--size N] [--scale S] [--seed K] [--out DIR] \
-                     [--spec TEXT]"
+                     [--spec TEXT] [--textures]"
                         .into(),
                 );
             }
@@ -186,6 +191,9 @@ fn run(o: &Options) -> Result<(), String> {
     fs::create_dir_all(&o.out).map_err(|e| format!("{}: {e}", o.out.display()))?;
     if let Some(spec) = &o.spec {
         return render::<f32, _>(o, "spec", &build(spec)?);
+    }
+    if o.textures {
+        return render_textures(o);
     }
     for base in Base::ALL.into_iter().filter(|b| b.has_dimension(2)) {
         let noise = build(&Spec::new(base, o.seed))?;

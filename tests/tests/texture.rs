@@ -75,18 +75,19 @@ fn windy_and_wrinkled_ranges() {
         let t: f64 = wrinkled.sample(p);
         assert!(h.abs() <= f64::from(Noise::<f64, 3>::amplitude_bound(&windy)));
         assert!((0.0..=f64::from(Noise::<f64, 3>::amplitude_bound(&wrinkled))).contains(&t));
-        windy_out += usize::from(h.abs() > 0.5);
+        windy_out += usize::from(h.abs() > 1.0 / 3.0);
         wrinkled_out += usize::from(t > 1.5);
         windy_max = windy_max.max(h.abs());
         wrinkled_max = wrinkled_max.max(t);
         n += 1;
     }
     println!(
-        "windy: |h| ≤ {windy_max:.3}, {windy_out} of {n} beyond 0.5; wrinkled ≤ \
+        "windy: |h| ≤ {windy_max:.3}, {windy_out} of {n} beyond 1/3; wrinkled ≤ \
          {wrinkled_max:.3}, {wrinkled_out} beyond 1.5"
     );
-    // The docs' claim behind the patterns' clamps: at most 0.1% of points clamped.
-    assert!(windy_out * 1000 <= n && wrinkled_out * 1000 <= n);
+    // The docs' claims behind the patterns' clamps: under 1% of points clamped in windy
+    // waves' (the crests), under 0.1% in wrinkled's.
+    assert!(windy_out * 100 <= n && wrinkled_out * 1000 <= n);
     // And the patterns use their range: the heights are not all near 0.
     assert!(windy_max > 0.2 && wrinkled_max > 0.6);
 }
