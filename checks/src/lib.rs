@@ -19,6 +19,7 @@ use bandnoise::impulse::{Envelope, Gabor, Orientation, Weights};
 use bandnoise::lattice::{MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
 use bandnoise::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
+use bandnoise::texture::{ColorMap, Marble, PolkaDots, Texture, Windy, Wood, Wrinkled};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet};
 use bandnoise::wiener::Covariance;
@@ -270,9 +271,9 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 
 /// Checksums of what is not a noise description: Gabor surface noise and filtering, projected
 /// sampling, wavelet gradients, filtering and infinite noise, the cell hash and generator, the
-/// kernels' `exp` and `cos`, [`TabledPerlin`] (Perlin's values through its table), and
-/// OpenSimplex2 and OpenSimplex2S (not yet in the description).
-const OTHER: [&str; 13] = [
+/// kernels' `exp` and `cos`, [`TabledPerlin`] (Perlin's values through its table),
+/// OpenSimplex2 and OpenSimplex2S (not yet in the description), and the textures.
+const OTHER: [&str; 14] = [
     "gabor surface",
     "gabor filtered",
     "multiband projected",
@@ -286,6 +287,7 @@ const OTHER: [&str; 13] = [
     "tabled perlin 3D",
     "simplex gradients, curl, flow, warp, mixed mnoise",
     "opensimplex2, opensimplex2s",
+    "textures",
 ];
 
 /// Gabor surface noise (isotropic: each impulse's direction turned into the plane) and Gabor
@@ -308,8 +310,30 @@ fn gabor_checksums<R: Bits>() -> [u32; 2] {
     [surface.0, filtered.0]
 }
 
-/// Checksums for every noise in one number type, in a fixed order (see [`names`]).
-fn all<R: Bits>(out: &mut [u32]) {
+/// The checksums of the runtime description: every base in each of its dimensions, and the
+/// composed descriptions (a [`Parts`] bit).
+pub const DESCRIPTIONS: Parts = 1;
+/// The checksums of what the description does not name (`OTHER`; a [`Parts`] bit).
+pub const OTHERS: Parts = 2;
+/// Which checksums a program computes: [`DESCRIPTIONS`], [`OTHERS`] or both (`3`). The
+/// Cortex-M0's fixed-point checks run as two programs, one per part: its 256 KiB of flash do
+/// not hold both parts' code.
+pub type Parts = u8;
+
+/// Checksums for every noise in one number type, in a fixed order (see [`names`]), of the
+/// parts in `PARTS` (the others' slots are left as they are).
+fn all<R: Bits, const PARTS: Parts>(out: &mut [u32]) {
+    let (described, others) = out.split_at_mut(BASE_CHECKS + COMPOSED);
+    if PARTS & DESCRIPTIONS != 0 {
+        descriptions::<R>(described);
+    }
+    if PARTS & OTHERS != 0 {
+        not_described::<R>(others);
+    }
+}
+
+/// The checksums of the runtime description in one number type.
+fn descriptions<R: Bits>(out: &mut [u32]) {
     let mut k = 0;
     let mut push = |v: u32| {
         if let Some(slot) = out.get_mut(k) {
@@ -325,6 +349,17 @@ fn all<R: Bits>(out: &mut [u32]) {
         let (_, spec, dims, range) = composed_entry(i);
         push(spec_checksum::<R>(&spec, dims, range));
     }
+}
+
+/// The checksums of what the description does not name, in one number type.
+fn not_described<R: Bits>(out: &mut [u32]) {
+    let mut k = 0;
+    let mut push = |v: u32| {
+        if let Some(slot) = out.get_mut(k) {
+            *slot = v;
+        }
+        k += 1;
+    };
     let [surface, filtered] = gabor_checksums::<R>();
     push(surface);
     push(filtered);
@@ -407,12 +442,41 @@ fn all<R: Bits>(out: &mut [u32]) {
     push(checksum::<R, 3>(&tabled, 200));
     push(vector_checksum::<R>());
     push(open_simplex_checksum::<R>());
+    push(texture_checksum::<R>());
+}
+
+/// The textures: pbrt's windy waves, wrinkled, marble and polka dots, Lewis's wood, Olano's
+/// wood and marble (2D), each value and pattern, and the colour maps (linear and B-spline).
+/// Out of line, for the Cortex-M0's stack.
+#[inline(never)]
+fn texture_checksum<R: Bits>() -> u32 {
+    let mut f = Fnv::new();
+    let (windy, wrinkled) = (Windy::new(2), Wrinkled::new(2));
+    let (marble, olano_marble) = (Marble::new(2), Marble::olano(2));
+    let (wood, olano_wood, dots) = (Wood::new(2), Wood::olano(2), PolkaDots::new(2));
+    fn add<R: Bits, T: Texture<R, 2>>(f: &mut Fnv, t: &T, p: [R; 2]) {
+        f.add(t.sample(p).bits());
+        f.add(t.pattern(p).bits());
+    }
+    for i in 0..POINTS / 4 {
+        let p = point::<R, 2>(i, 100);
+        add(&mut f, &windy, p);
+        add(&mut f, &wrinkled, p);
+        add(&mut f, &marble, p);
+        add(&mut f, &olano_marble, p);
+        add(&mut f, &wood, p);
+        add(&mut f, &olano_wood, p);
+        add(&mut f, &dots, p);
+        let t = R::from_ratio(i as i32 * 2731 % 1200 - 100, 10);
+        for map in [ColorMap::MARBLE, ColorMap::WOOD] {
+            map.map(t).iter().for_each(|c| f.add(c.bits()));
+        }
+    }
+    f.0
 }
 
 /// OpenSimplex2 and OpenSimplex2S in 2D–4D and each orientation (values; 3D gradients, whose
-/// chain rule runs through the turn). Fixed point leaves 4D out: with it, the Cortex-M0's
-/// fixed-point checksum program overflows the microbit's 256 KiB of flash by 3.4 KB (4D's
-/// 160 gradients are 2.5 KB). Out of line, for the Cortex-M0's stack.
+/// chain rule runs through the turn). Out of line, for the Cortex-M0's stack.
 #[inline(never)]
 fn open_simplex_checksum<R: Bits>() -> u32 {
     let mut f = Fnv::new();
@@ -426,10 +490,8 @@ fn open_simplex_checksum<R: Bits>() -> u32 {
             let p = point::<R, 4>(i + 64 * k as u32, 100);
             f.add(fast.sample([p[0], p[1]]).bits());
             f.add(smooth.sample([p[0], p[1]]).bits());
-            if R::BINARY32 {
-                f.add(fast.sample(p).bits());
-                f.add(smooth.sample(p).bits());
-            }
+            f.add(fast.sample(p).bits());
+            f.add(smooth.sample(p).bits());
             let (v, g) = fast.sample_with_gradient([p[0], p[1], p[2]]);
             g.iter().chain([&v]).for_each(|x| f.add(x.bits()));
             let (v, g) = smooth.sample_with_gradient([p[0], p[1], p[2]]);
@@ -530,27 +592,33 @@ pub const fn is_fixed(i: usize) -> bool {
 /// Compares [`checksums`] with `expected` (the host's), calling `report(number type, name,
 /// got, expected)` for each difference; returns how many differ.
 pub fn compare(expected: &[u32; COUNT], report: impl FnMut(&str, Name, u32, u32)) -> usize {
-    compare_part::<true, true>(expected, report).1
+    compare_part::<true, true, { DESCRIPTIONS | OTHERS }>(expected, report).1
 }
 
-/// [`compare`] for the I16F16 checksums if `FIXED`, the f32 ones if `FLOAT`: a program that
-/// compares one number type links the code of that one only (the Cortex-M0's 256 KiB of flash
-/// do not hold both). Returns how many were compared and how many differ.
-pub fn compare_part<const FIXED: bool, const FLOAT: bool>(
+/// [`compare`] for the I16F16 checksums if `FIXED`, the f32 ones if `FLOAT`, of the
+/// [`Parts`] in `PARTS`: a program that compares one number type, or one part, links the code
+/// of that one only (the Cortex-M0's 256 KiB of flash do not hold it all). Returns how many
+/// were compared and how many differ.
+pub fn compare_part<const FIXED: bool, const FLOAT: bool, const PARTS: Parts>(
     expected: &[u32; COUNT],
     mut report: impl FnMut(&str, Name, u32, u32),
 ) -> (usize, usize) {
     let mut out = [0u32; COUNT];
     let (fixed, float) = out.split_at_mut(COUNT / 2);
     if FIXED {
-        all::<I16F16>(fixed);
+        all::<I16F16, PARTS>(fixed);
     }
     if FLOAT {
-        all::<f32>(float);
+        all::<f32, PARTS>(float);
     }
     let (mut compared, mut differ) = (0, 0);
     for (i, (g, e)) in out.iter().zip(expected).enumerate() {
-        if if is_fixed(i) { !FIXED } else { !FLOAT } {
+        let part = if i % (COUNT / 2) < BASE_CHECKS + COMPOSED {
+            DESCRIPTIONS
+        } else {
+            OTHERS
+        };
+        if !(if is_fixed(i) { FIXED } else { FLOAT }) || PARTS & part == 0 {
             continue;
         }
         compared += 1;
@@ -574,8 +642,8 @@ fn name(i: usize) -> Name {
 pub fn checksums() -> [u32; COUNT] {
     let mut out = [0u32; COUNT];
     let (fixed, float) = out.split_at_mut(COUNT / 2);
-    all::<I16F16>(fixed);
-    all::<f32>(float);
+    all::<I16F16, { DESCRIPTIONS | OTHERS }>(fixed);
+    all::<f32, { DESCRIPTIONS | OTHERS }>(float);
     out
 }
 

@@ -1,5 +1,6 @@
-// The body of the `checks`, `checks-fixed` and `checks-float` programs (`include!`d: each
-// defines `FIXED` and `FLOAT`, the number types whose checksums it compares).
+// The body of the `checks`, `checks-fixed`, `checks-fixed-other` and `checks-float` programs
+// (`include!`d: each defines `FIXED` and `FLOAT`, the number types whose checksums it
+// compares, and `PARTS`, which of them: bandnoise_checks::Parts).
 
 use core::panic::PanicInfo;
 
@@ -12,12 +13,14 @@ include!(concat!(env!("OUT_DIR"), "/expected.rs"));
 
 #[entry]
 fn main() -> ! {
-    let (compared, bad) = compare_part::<FIXED, FLOAT>(&EXPECTED, |ty, name, got, host| {
+    let (compared, bad) = compare_part::<FIXED, FLOAT, PARTS>(&EXPECTED, |ty, name, got, host| {
         hprintln!("MISMATCH {} {}: {:08x}, host {:08x}", ty, name, got, host);
     });
-    let types = match (FIXED, FLOAT) {
-        (true, true) => "I16F16 and f32",
-        (true, false) => "I16F16",
+    let types = match (FIXED, FLOAT, PARTS) {
+        (true, true, _) => "I16F16 and f32",
+        (true, false, bandnoise_checks::DESCRIPTIONS) => "I16F16, the descriptions",
+        (true, false, bandnoise_checks::OTHERS) => "I16F16, the others",
+        (true, false, _) => "I16F16",
         _ => "f32",
     };
     hprintln!(

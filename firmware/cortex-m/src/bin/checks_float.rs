@@ -4,5 +4,6 @@
 
 const FIXED: bool = false;
 const FLOAT: bool = true;
+const PARTS: bandnoise_checks::Parts = bandnoise_checks::DESCRIPTIONS | bandnoise_checks::OTHERS;
 
 include!("../checks_body.rs");
