@@ -10,7 +10,9 @@
 //! refused outside 1..=65536 (and for simplex noise), otherwise within the bound and periodic
 //! bit for bit in fixed point. Curl noise over simplex and Perlin noise: finite, bounded.
 //! OpenSimplex2 and OpenSimplex2S (seed and orientation from the input): within their bounds,
-//! batches equal to points, gradients finite.
+//! batches equal to points, gradients finite. The textures (settings from the input's bits:
+//! refused out of range, otherwise within their ranges, colours in `[0, 1]`, batches equal to
+//! points).
 #![no_main]
 
 use arbitrary::Arbitrary;
@@ -20,6 +22,7 @@ use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin};
 use bandnoise::simplex::{Flow, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::spec::{Base, Spec, SpecNoise};
+use bandnoise::texture::{Marble, PolkaDots, Texture, Windy, Wood, Wrinkled};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::Distribution;
 use bandnoise::{I16F16, Noise, NoiseGradient};
@@ -227,6 +230,51 @@ fn flow(seed: u32, angle: f32, floats: [f32; 4], fixed: [I16F16; 4], exact: f32)
     );
 }
 
+/// The textures in 2D and 3D: pbrt's, Lewis's and Olano's with their defaults, polka dots of a
+/// radius and chance, marble and wood of a scale, variation, rings and amount from the input's
+/// bits (refused unless in range); each within its range with colours in `[0, 1]` and batches
+/// equal to points. (Fixed point is not compared with f32: the wood's rings, the dots' edges
+/// and the marble's sine turn small differences into large ones.)
+fn textures(seed: u32, bits: [u32; 3], floats: [f32; 4], fixed: [I16F16; 4]) {
+    fn both<T: Texture<f32, 2> + Texture<f32, 3> + Texture<I16F16, 2> + Texture<I16F16, 3>>(
+        t: &T,
+        floats: [f32; 4],
+        fixed: [I16F16; 4],
+    ) {
+        dim::<2, _>(t, floats, fixed, 0.0);
+        dim::<3, _>(t, floats, fixed, 0.0);
+        let p = [floats[0], floats[1], floats[2]];
+        let q = [fixed[0], fixed[1], fixed[2]];
+        assert!(t.color(p).iter().all(|c| (0.0..=1.0).contains(c)), "{p:?}");
+        assert!(t.color(q).iter().all(|c| *c >= 0 && *c <= 1), "{q:?}");
+        let unit: f32 = t.pattern(p);
+        assert!((0.0..=1.0).contains(&unit), "{p:?}: {unit}");
+    }
+    both(&Windy::new(seed), floats, fixed);
+    both(&Wrinkled::new(seed), floats, fixed);
+    both(&Marble::new(seed), floats, fixed);
+    both(&Marble::olano(seed), floats, fixed);
+    both(&Wood::new(seed), floats, fixed);
+    both(&Wood::olano(seed), floats, fixed);
+    let [a, b, c] = bits.map(f32::from_bits);
+    let d = f32::from_bits(seed.rotate_left(7));
+    match PolkaDots::new(seed)
+        .with_radius(a)
+        .and_then(|t| t.with_chance(b))
+    {
+        Ok(dots) => both(&dots, floats, fixed),
+        Err(_) => assert!(!((0.0..=0.5).contains(&a) && (0.0..=1.0).contains(&b))),
+    }
+    match Marble::with_noise(Perlin::new(seed), c, d) {
+        Ok(marble) => both(&marble, floats, fixed),
+        Err(_) => assert!(!(c.abs() <= 1024.0 && d.abs() <= 1024.0)),
+    }
+    match Wood::with_noise(Perlin::new(seed), c, d) {
+        Ok(wood) => both(&wood, floats, fixed),
+        Err(_) => assert!(!((1.0 / 65536.0..=1024.0).contains(&c) && d.abs() <= 1024.0)),
+    }
+}
+
 /// OpenSimplex2 and OpenSimplex2S in 1D–4D for a seed and orientation from the input: within
 /// their bounds in both number types, the batch path equal to the point path, the gradient
 /// finite. (Fixed point is not compared with f32: both can fall on either side of the
@@ -318,6 +366,7 @@ fuzz_target!(|input: Input| {
     }
     if base == Base::Perlin {
         tabled(input.seed, floats);
+        textures(input.seed, input.periods, floats, fixed);
     }
     if base == Base::MNoise {
         mixed(input.seed, floats, fixed);

@@ -146,7 +146,10 @@ impl ColorMap {
         } else {
             t
         };
-        let c = |k: usize, a: usize| R::from_ratio(i32::from(self.colors[k][a]), 16);
+        // `segment` keeps every index below the length; `get` says so without a panic path.
+        let c = |k: usize, a: usize| {
+            R::from_ratio(self.colors.get(k).map_or(0, |c| i32::from(c[a])), 16)
+        };
         match self.interpolation {
             Interpolation::Linear => {
                 let (k, f) = segment(t, self.colors.len() - 1);

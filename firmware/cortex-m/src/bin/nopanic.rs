@@ -1,5 +1,6 @@
 //! Proof that sampling cannot panic: this program evaluates every noise (all lattice noises in
-//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, OpenSimplex2 and OpenSimplex2S, flow noise and its fBm, white and cubic value noise 1D–4D, curl noise, domain warping, fractal sums, wavelet bands,
+//! 1D–4D, mNoise from Olano's table and its turbulence, simplex, OpenSimplex2 and OpenSimplex2S, flow noise and its fBm, white and cubic value noise 1D–4D, curl noise, domain warping, the
+//! textures and their colours, fractal sums, wavelet bands,
 //! projected and multiband noise, sparse, Wiener and Gabor noise, batches, integer outputs
 //! (`levels`), and the public helpers `from_ratio`, `unit_normal`, `erf`, `exp_neg` and
 //! `cos_turns`) in I16F16 and f32 on inputs the optimiser cannot see (`nopanic-spec` proves the
@@ -23,6 +24,7 @@ use bandnoise::lattice::{
 };
 use bandnoise::levels::Levels;
 use bandnoise::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
+use bandnoise::texture::{Marble, PolkaDots, Texture, Windy, Wood, Wrinkled};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, erf, unit_normal,
@@ -106,6 +108,21 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         add(warp.sample_with_gradient([p[0], p[1], p[2]]).1[1]);
         add(warp.displace([p[0], p[1], p[2]])[0]);
     }
+    all_dims!(Windy::new(black_box(1)));
+    all_dims!(Wrinkled::new(black_box(1)));
+    all_dims!(Marble::new(black_box(1)));
+    all_dims!(Marble::olano(black_box(1)));
+    all_dims!(Wood::olano(black_box(1)));
+    if let Ok(wood) = Wood::with_noise(Perlin::new(black_box(1)), black_box(3.0), black_box(0.2)) {
+        all_dims!(wood.clone());
+        wood.color([p[0], p[1], p[2]]).iter().for_each(|&c| add(c));
+    }
+    if let Ok(dots) = PolkaDots::new(black_box(1)).with_radius(black_box(0.3)) {
+        all_dims!(dots.clone());
+        add(R::from_i32(i32::from(dots.color_rgb8([p[0], p[1]])[2])));
+    }
+    add(Marble::new(2).color(p)[1]);
+    add(Windy::new(2).sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[2]]));
     add(Perlin::new(2).sample_with_gradient([p[0], p[1], p[2]]).0);
     add(MNoise::<61>::new(2).sample_with_gradient([p[0], p[1]]).1[1]);
     let kind = black_box(Kind::Ridged);
