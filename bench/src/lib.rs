@@ -14,7 +14,9 @@ use bandnoise::batch::Grid;
 use bandnoise::cellular::Cellular;
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::impulse::SparseConvolution;
-use bandnoise::lattice::{MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise};
+use bandnoise::lattice::{
+    CubicValueNoise, MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise,
+};
 use bandnoise::simplex::{Flow, OpenSimplex2, OpenSimplex2S, Simplex};
 use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
@@ -61,7 +63,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 30] = [
+pub const FUNCTIONS: [&str; 31] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -77,6 +79,7 @@ pub const FUNCTIONS: [&str; 30] = [
     "turbulence4-mnoise-3d-tilted",
     "turbulence4-mixed-3d-tilted",
     "value-2d",
+    "value-cubic-2d",
     "wavelet-2d",
     "wavelet-3d",
     "wavelet-projected-axis",
@@ -255,6 +258,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         }
         ("value-2d", "bandnoise") => l.point::<_, 2>(ValueNoise::new(0)),
         ("value-2d", "bandnoise-batch") => l.batch::<_, 2>(ValueNoise::new(0)),
+        ("value-cubic-2d", "bandnoise") => l.point::<_, 2>(CubicValueNoise::new(0)),
+        ("value-cubic-2d", "bandnoise-batch") => l.batch::<_, 2>(CubicValueNoise::new(0)),
         ("wavelet-2d", "bandnoise") => l.point::<_, 2>(Wavelet::new(0, &TILE2)),
         ("wavelet-2d", "bandnoise-batch") => l.batch::<_, 2>(Wavelet::new(0, &TILE2)),
         ("wavelet-3d", "bandnoise") => l.point::<_, 3>(Wavelet::new(0, &TILE3)),
@@ -403,6 +408,11 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
             let n = fast(NoiseType::Value, None);
             l.peer2(move |x, y| n.get_noise_2d(x, y))
         }
+        // Catmull-Rom interpolation of lattice values, as CubicValueNoise.
+        ("value-cubic-2d", "fastnoise-lite") => {
+            let n = fast(NoiseType::ValueCubic, None);
+            l.peer2(move |x, y| n.get_noise_2d(x, y))
+        }
         ("fbm6-perlin-3d", "fastnoise-lite") => {
             let n = fast(NoiseType::Perlin, Some(6));
             l.peer2(move |x, y| n.get_noise_3d(x, y, Z))
@@ -416,6 +426,9 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
             l.peer2(|x, y| noise_functions::Perlin.sample4([x, y, Z, W]))
         }
         ("value-2d", "noise-functions") => l.peer2(|x, y| noise_functions::Value.sample2([x, y])),
+        ("value-cubic-2d", "noise-functions") => {
+            l.peer2(|x, y| noise_functions::ValueCubic.sample2([x, y]))
+        }
         ("fbm6-perlin-3d", "noise-functions") => {
             let n = noise_functions::Perlin.fbm(6, 0.5, 2.0);
             l.peer2(move |x, y| n.sample3([x, y, Z]))
