@@ -60,10 +60,13 @@ static GAUSSIAN_HALF: [i16; MIDDLE + 1] = gaussian_half();
 
 /// Every entry of each table ([`table_value`]), so that a sample reads its value with one load
 /// (2 KiB each; the formula's remainder, division and sign took a cubic value-noise sample
-/// half of its instructions).
+/// half of its instructions). Not with the `small` feature.
+#[cfg(not(feature = "small"))]
 static UNIFORM: [i16; VALUES] = full_table(Distribution::Uniform);
+#[cfg(not(feature = "small"))]
 static GAUSSIAN: [i16; VALUES] = full_table(Distribution::Gaussian);
 
+#[cfg(not(feature = "small"))]
 const fn full_table(distribution: Distribution) -> [i16; VALUES] {
     let mut t = [0i16; VALUES];
     let mut k = 0;
@@ -239,12 +242,19 @@ impl WhiteNoise {
     /// The value for a cell whose hash is `h`.
     #[inline]
     pub(crate) fn value_of_hash<R: Real>(&self, h: u32) -> R {
-        let table = match self.distribution {
-            Distribution::Uniform => &UNIFORM,
-            Distribution::Gaussian => &GAUSSIAN,
+        // The `small` feature computes the entry (4 KiB less data, more instructions).
+        #[cfg(feature = "small")]
+        let value = table_value(self.distribution, h as usize);
+        #[cfg(not(feature = "small"))]
+        let value = {
+            let table = match self.distribution {
+                Distribution::Uniform => &UNIFORM,
+                Distribution::Gaussian => &GAUSSIAN,
+            };
+            // `% VALUES` keeps the index in the table (the comparison-free bounds proof).
+            table[(h % VALUES as u32) as usize]
         };
-        // `% VALUES` keeps the index in the table (the comparison-free bounds proof).
-        R::from_ratio(i32::from(table[(h % VALUES as u32) as usize]), SHIFT)
+        R::from_ratio(i32::from(value), SHIFT)
     }
 }
 
