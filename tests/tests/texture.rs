@@ -342,6 +342,21 @@ fn settings_are_checked() {
     assert!(Wood::with_noise(Perlin::new(0), 2.0, f32::NAN).is_err());
     let w = Wood::with_noise(Perlin::new(0), 2.0, -0.5).unwrap();
     assert_eq!((w.rings(), w.amount()), (2.0, -0.5));
+    // The defaults the docs state.
+    let (m, o) = (Marble::new(0), Marble::olano(0));
+    assert_eq!(
+        (m.scale(), m.variation(), o.scale(), o.variation()),
+        (1.0, 0.2, 1.0, 1.5)
+    );
+    let (w, o) = (Wood::new(0), Wood::olano(0));
+    assert_eq!(
+        (w.rings(), w.amount(), o.rings(), o.amount()),
+        (2.0, 0.3, 2.0, 0.3)
+    );
+    assert_eq!(
+        (PolkaDots::new(0).radius(), PolkaDots::new(0).chance()),
+        (0.35, 0.5)
+    );
     let d = PolkaDots::new(0).with_chance(0.25).unwrap();
     assert_eq!((d.radius(), d.chance()), (0.35, 0.25));
 }

@@ -211,7 +211,7 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Texture<R, D> for Wrinkled<N> {
 /// [`Marble::new`] is pbrt's: fBm of 8 octaves (gain 0.5, lacunarity 1.99) of Perlin's noise,
 /// scale 1, variation 0.2. [`Marble::olano`] is Olano's (2005, Fig. 7c): the strata perturbed
 /// by his 4-octave turbulence evaluated from one 2D table, Perlin's 1985
-/// `sin(x + turbulence(p))`, scale 1 and variation 4 (turbulence's mean is near 0.35).
+/// `sin(x + turbulence(p))`, scale 1 and variation 1.5 (turbulence's mean is near 0.35).
 ///
 /// Range: `[0, 1]` (the sine is from [`Real::cos_turns`], within `[−1, 1]`). With a noise
 /// that is a [`FilteredNoise`], the marble is one too: the noise anti-aliased by the footprint
@@ -253,7 +253,7 @@ impl Marble<Fractal<Perlin>> {
 
 impl Marble<MixedTurbulence<4>> {
     /// Olano's marble: [`MixedTurbulence::new(seed)`](MixedTurbulence::new), scale 1,
-    /// variation 4.
+    /// variation 1.5.
     #[must_use]
     pub fn olano(seed: u32) -> Self {
         Self {

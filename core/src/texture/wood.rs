@@ -13,9 +13,9 @@ use crate::{Error, FilteredNoise, Noise, Real};
 /// axis (`|x|` in 1D).
 ///
 /// [`Wood::new`] perturbs the radius by fBm of 4 octaves (gain 0.5, lacunarity 1.99) of
-/// Perlin's noise, 4 rings per unit, amount 0.1; [`Wood::olano`] is Olano's wood (2005,
+/// Perlin's noise, 2 rings per unit, amount 0.3; [`Wood::olano`] is Olano's wood (2005,
 /// Fig. 7b): the perturbation is his 4-octave turbulence evaluated from one 2D table, amount
-/// 0.1. Lewis's refinements (a quasi-periodic `xtab`, a random monotonic remap of the radius
+/// 0.3. Lewis's refinements (a quasi-periodic `xtab`, a random monotonic remap of the radius
 /// for years of slow and fast growth) are a colour map and a noise away.
 ///
 /// With a noise that is a [`FilteredNoise`], the wood is one too (the noise anti-aliased; the
