@@ -445,8 +445,9 @@ fn not_described<R: Bits>(out: &mut [u32]) {
     push(texture_checksum::<R>());
 }
 
-/// The textures: pbrt's windy waves, wrinkled, marble and polka dots, Lewis's wood, Olano's
-/// wood and marble (2D), each value and pattern, and the colour maps (linear and B-spline).
+/// The textures: pbrt's windy waves, wrinkled, marble and polka dots (also filtered, by
+/// footprints from 0 to past a cell), Lewis's wood, Olano's wood and marble (2D), each value
+/// and pattern, and the colour maps (linear and B-spline).
 /// Out of line, for the Cortex-M0's stack.
 #[inline(never)]
 fn texture_checksum<R: Bits>() -> u32 {
@@ -467,6 +468,8 @@ fn texture_checksum<R: Bits>() -> u32 {
         add(&mut f, &wood, p);
         add(&mut f, &olano_wood, p);
         add(&mut f, &dots, p);
+        let w = R::from_ratio(i as i32 * 29 % 80, 6);
+        f.add(dots.sample_filtered(p, [w, R::ZERO], [R::ZERO, w]).bits());
         let t = R::from_ratio(i as i32 * 2731 % 1200 - 100, 10);
         for map in [ColorMap::MARBLE, ColorMap::WOOD] {
             map.map(t).iter().for_each(|c| f.add(c.bits()));

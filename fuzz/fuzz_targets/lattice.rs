@@ -25,7 +25,7 @@ use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::texture::{Marble, PolkaDots, Texture, Windy, Wood, Wrinkled};
 use bandnoise::vector::{Components, Curl2, Curl3, VectorNoise, Warp};
 use bandnoise::wavelet::Distribution;
-use bandnoise::{I16F16, Noise, NoiseGradient};
+use bandnoise::{FilteredNoise, I16F16, Noise, NoiseGradient};
 use libfuzzer_sys::fuzz_target;
 
 #[derive(Arbitrary, Debug)]
@@ -262,7 +262,15 @@ fn textures(seed: u32, bits: [u32; 3], floats: [f32; 4], fixed: [I16F16; 4]) {
         .with_radius(a)
         .and_then(|t| t.with_chance(b))
     {
-        Ok(dots) => both(&dots, floats, fixed),
+        Ok(dots) => {
+            both(&dots, floats, fixed);
+            let footprint = [floats[3], floats[2]];
+            let v: f32 = dots.sample_filtered([floats[0], floats[1]], footprint, footprint);
+            assert!((0.0..=1.0).contains(&v), "{floats:?}: {v}");
+            let q = [fixed[0], fixed[1]];
+            let w: I16F16 = dots.sample_filtered(q, [fixed[3], fixed[2]], [fixed[2], fixed[3]]);
+            assert!(w >= 0 && w <= 1, "{fixed:?}: {w}");
+        }
         Err(_) => assert!(!((0.0..=0.5).contains(&a) && (0.0..=1.0).contains(&b))),
     }
     match Marble::with_noise(Perlin::new(seed), c, d) {

@@ -416,7 +416,59 @@ fn filtered_textures_are_total() {
             Wrinkled::new(0).sample_filtered(p, w, w),
             Marble::new(0).sample_filtered(p, w, w),
             Wood::new(0).sample_filtered(p, w, w),
+            PolkaDots::new(0).sample_filtered(p, w, w),
         ];
         assert!(values.iter().all(|v| v.is_finite()), "{w:?}: {values:?}");
+    }
+}
+
+#[test]
+fn filtered_polka_dots_keep_their_coverage_and_fade_to_it() {
+    let dots = PolkaDots::new(6);
+    let zero = [0.0f64; 2];
+    let mean = 0.5 * std::f64::consts::PI * f64::from(0.35f32).powi(2);
+    let (mut plain, mut filtered, mut n) = (0.0, 0.0, 0.0);
+    for [x, y] in user_grid(600) {
+        let p = [x * 0.61, y * 0.61];
+        let v: f64 = dots.sample(p);
+        // No footprint, or an unknown one: the plain sample, bit for bit.
+        assert_eq!(dots.sample_filtered(p, zero, zero), v);
+        assert_eq!(dots.sample_filtered(p, [f64::NAN; 2], zero), v);
+        // A footprint of a fifth of a cell: in [0, 1], and the same coverage on average
+        // (the ramp is symmetric about the edge).
+        let w: f64 = dots.sample_filtered(p, [0.2, 0.0], [0.0, 0.1]);
+        assert!((0.0..=1.0).contains(&w));
+        let single: f32 = dots.sample_filtered(p.map(|c| c as f32), [0.2, 0.0], [0.0, 0.1]);
+        let fixed: I16F16 = dots.sample_filtered(
+            p.map(I16F16::from_num),
+            [I16F16::from_num(0.2), I16F16::ZERO],
+            [I16F16::ZERO, I16F16::from_num(0.1)],
+        );
+        assert!((f64::from(single) - w).abs() < 1e-4, "{p:?}");
+        assert!(
+            (fixed.to_num::<f64>() - w).abs() < 2e-2,
+            "{p:?}: {fixed} vs {w}"
+        );
+        plain += v;
+        filtered += w;
+        n += 1.0;
+        // A cell or more: the mean coverage.
+        let far: f64 = dots.sample_filtered(p, [1.5, 0.0], zero);
+        assert!((far - mean).abs() < 1e-6);
+        assert_eq!(dots.sample_filtered(p, [f64::INFINITY, 0.0], zero), far);
+    }
+    println!(
+        "coverage: plain {:.4}, filtered {:.4}, expected {mean:.4}",
+        plain / n,
+        filtered / n
+    );
+    // The ramp across a round edge adds a little: π w²/12 per dot (0.0052 here).
+    let added = filtered / n - plain / n;
+    assert!((0.0..0.008).contains(&added), "{added}");
+    // Between ½ and 1 cell the value moves to the mean: at 0.9 it is a fifth of the way from
+    // the edge's ramp (somewhere in [0, 1]).
+    for [x, y] in user_grid(50) {
+        let v: f64 = dots.sample_filtered([x, y], [0.9, 0.0], zero);
+        assert!((v - mean).abs() <= 0.2 * (1.0 - mean) + 1e-9, "{v}");
     }
 }

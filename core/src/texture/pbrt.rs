@@ -359,8 +359,9 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Texture<R, D> for Marble<N> {
 ///
 /// pbrt draws the presence and the shift from Perlin noise at points offset from the cell
 /// centre; here they come from the cell's own generator ([`CellRng`], seeded by the texture's
-/// seed and the cell), so that neighbouring cells are independent and every seed differs. Like
-/// pbrt's, the dots are not anti-aliased (their edge is a step).
+/// seed and the cell), so that neighbouring cells are independent and every seed differs. The
+/// plain sample is a step at the dot's edge, as pbrt's; [`FilteredNoise`] anti-aliases it by a
+/// footprint.
 ///
 /// # Examples
 ///
@@ -440,8 +441,10 @@ impl PolkaDots {
     }
 }
 
-impl<R: Real, const D: usize> Noise<R, D> for PolkaDots {
-    fn sample(&self, p: [R; D]) -> R {
+impl PolkaDots {
+    /// The squared distance from `p` to the dot of its cell, if the cell holds one.
+    #[inline]
+    fn dot<R: Real, const D: usize>(&self, p: [R; D]) -> Option<R> {
         // The cell whose centre is nearest (`⌊x + ½⌋`), and the offset from it in [−½, ½).
         let half = R::from_ratio(1, 1);
         let mut cell = [0i32; D];
@@ -456,7 +459,7 @@ impl<R: Real, const D: usize> Noise<R, D> for PolkaDots {
         }
         let mut rng = CellRng::new(&self.hash, cell);
         if u64::from(rng.next_u32()) >= self.threshold {
-            return R::ZERO;
+            return None;
         }
         let shift = self.shift.get::<R>();
         let mut d2 = R::ZERO;
@@ -465,12 +468,80 @@ impl<R: Real, const D: usize> Noise<R, D> for PolkaDots {
             let e = x - shift.mul_rn(rng.signed_uniform());
             d2 = d2 + e.mul_rn(e);
         }
+        Some(d2)
+    }
+
+    /// The fraction of space the dots cover in `D` dimensions: `chance · V_D(r)`, the
+    /// probability of a dot times its ball's volume (`2r`, `πr²`, `4πr³/3`, `π²r⁴/2`).
+    fn coverage<const D: usize>(&self) -> f32 {
+        let r = self.radius.value();
+        let ball = match D {
+            1 => 2.0 * r,
+            2 => core::f32::consts::PI * r * r,
+            3 => 4.0 / 3.0 * core::f32::consts::PI * r * r * r,
+            _ => 0.5 * core::f32::consts::PI * core::f32::consts::PI * r * r * r * r,
+        };
+        self.chance() * ball
+    }
+}
+
+impl<R: Real, const D: usize> Noise<R, D> for PolkaDots {
+    fn sample(&self, p: [R; D]) -> R {
         let r = self.radius.get::<R>();
-        if d2 < r.mul_rn(r) { R::ONE } else { R::ZERO }
+        match self.dot(p) {
+            Some(d2) if d2 < r.mul_rn(r) => R::ONE,
+            _ => R::ZERO,
+        }
     }
 
     fn amplitude_bound(&self) -> f32 {
         1.0
+    }
+}
+
+/// The dots anti-aliased by the footprint (pbrt leaves this as an exercise): with
+/// `w = max(|dpdx|, |dpdy|)`, a dot's edge ramps from 1 to 0 over `w` (`½ + (r − d)/w`,
+/// clamped: the covered fraction of a footprint of width `w` across a straight edge; across the
+/// round edge it adds `πw²/12` to a 2D dot's area), and
+/// footprints from ½ to 1 cell fade to the dots' mean coverage (`chance · V_D(r)`), which
+/// footprints of a cell and wider give. A zero or unknown (NaN) footprint is the plain
+/// sample; an infinite one the mean. Neighbouring cells' dots are not looked at: a dot stays
+/// within its cell, and footprints wide enough to reach across fade to the mean.
+impl<R: Real, const D: usize> FilteredNoise<R, D> for PolkaDots {
+    fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
+        let len2 = crate::fractal::footprint_len2(&dpdx, &dpdy);
+        if len2.is_nan() || len2 == R::ZERO {
+            return self.sample(p);
+        }
+        // √∞ is ∞ (floats); fixed point's root is at most 2^7.5 (no infinity to compare).
+        let w = len2.sqrt();
+        let mean = R::from_f32(self.coverage::<D>());
+        if w >= R::ONE {
+            return mean;
+        }
+        let half = R::from_ratio(1, 1);
+        let edge = match self.dot(p) {
+            Some(d2) => {
+                // w ∈ (0, 1) and |r − d| < 1: the quotient is finite; clamped to [0, 1].
+                let t = half + (self.radius.get::<R>() - d2.sqrt()).div(w);
+                if t < R::ZERO {
+                    R::ZERO
+                } else if t > R::ONE {
+                    R::ONE
+                } else {
+                    t
+                }
+            }
+            None => R::ZERO,
+        };
+        // Fade to the mean over w ∈ [½, 1]: the weight 2w − 1 clamped to [0, 1].
+        let fade = w + w - R::ONE;
+        let v = if fade > R::ZERO {
+            edge + fade.mul_fraction(mean - edge)
+        } else {
+            edge
+        };
+        v.canonical()
     }
 }
 

@@ -120,6 +120,7 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     if let Ok(dots) = PolkaDots::new(black_box(1)).with_radius(black_box(0.3)) {
         all_dims!(dots.clone());
         add(R::from_i32(i32::from(dots.color_rgb8([p[0], p[1]])[2])));
+        add(dots.sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[1]]));
     }
     add(Marble::new(2).color(p)[1]);
     add(Windy::new(2).sample_filtered([p[0], p[1]], [p[2], p[3]], [p[3], p[2]]));
