@@ -138,14 +138,7 @@ impl ColorMap {
     /// `[0, 1]`.
     #[must_use]
     pub fn map<R: Real>(&self, t: R) -> [R; 3] {
-        let t = t.finite_or_zero();
-        let t = if t < R::ZERO {
-            R::ZERO
-        } else if t > R::ONE {
-            R::ONE
-        } else {
-            t
-        };
+        let t = t.finite_or_zero().clamp_to(R::ZERO, R::ONE);
         // `segment` keeps every index below the length; `get` says so without a panic path.
         let c = |k: usize, a: usize| {
             R::from_ratio(self.colors.get(k).map_or(0, |c| i32::from(c[a])), 16)

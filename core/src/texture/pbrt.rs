@@ -13,14 +13,9 @@ const TENTH: (f32, I16F16) = (0.1, I16F16::from_bits(6554));
 /// `clamp(½ + gain · v, 0, 1)`: a height as a colour map's fraction.
 #[inline]
 fn unit_from_height<R: Real>(v: R, gain: R) -> R {
-    let t = R::from_ratio(1, 1).saturating_add(gain.saturating_mul(v));
-    if t < R::ZERO {
-        R::ZERO
-    } else if t > R::ONE {
-        R::ONE
-    } else {
-        t
-    }
+    R::from_ratio(1, 1)
+        .saturating_add(gain.saturating_mul(v))
+        .clamp_to(R::ZERO, R::ONE)
 }
 
 /// pbrt's windy waves (§10.6.5): `|fBm(p/10, 3 octaves)| · fBm(p, 6 octaves)`, waves whose
@@ -195,8 +190,9 @@ impl<N: Noise<R, D>, R: Real, const D: usize> FilteredNoise<R, D> for Wrinkled<N
 impl<N: Noise<R, D>, R: Real, const D: usize> Texture<R, D> for Wrinkled<N> {
     fn pattern(&self, p: [R; D]) -> R {
         let two_thirds = R::from_setting(2.0 / 3.0, I16F16::from_bits(43691));
-        let v = self.sample(p).saturating_mul(two_thirds);
-        if v > R::ONE { R::ONE } else { v }
+        self.sample(p)
+            .saturating_mul(two_thirds)
+            .clamp_to(R::ZERO, R::ONE)
     }
 
     fn color_map(&self) -> &ColorMap {
@@ -523,14 +519,7 @@ impl<R: Real, const D: usize> FilteredNoise<R, D> for PolkaDots {
         let edge = match self.dot(p) {
             Some(d2) => {
                 // w ∈ (0, 1) and |r − d| < 1: the quotient is finite; clamped to [0, 1].
-                let t = half + (self.radius.get::<R>() - d2.sqrt()).div(w);
-                if t < R::ZERO {
-                    R::ZERO
-                } else if t > R::ONE {
-                    R::ONE
-                } else {
-                    t
-                }
+                (half + (self.radius.get::<R>() - d2.sqrt()).div(w)).clamp_to(R::ZERO, R::ONE)
             }
             None => R::ZERO,
         };
