@@ -105,6 +105,9 @@ pub enum Error {
     Jitter(f32),
     /// A cellular setting (output, metric, jitter) asked for another noise.
     NotCellular(&'static str),
+    /// An OpenSimplex2 orientation ([`Improve`](crate::simplex::Improve)) asked for another
+    /// noise.
+    NotOpenSimplex(&'static str),
     /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
     ///
     /// [`Spec::build`]: crate::spec::Spec::build
@@ -267,6 +270,10 @@ impl fmt::Display for Error {
             Error::NotCellular(noise) => write!(
                 f,
                 "{noise} noise has no cellular settings (output, metric and jitter are for cellular noise)"
+            ),
+            Error::NotOpenSimplex(noise) => write!(
+                f,
+                "{noise} noise has no lattice orientation (improve= is for OpenSimplex2 and OpenSimplex2S)"
             ),
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")

@@ -25,6 +25,7 @@
 //! simplex seed=9 fbm octaves=5
 //! cellular seed=2 output=f2-f1 metric=manhattan jitter=0.8
 //! value-cubic seed=6 distribution=gaussian
+//! opensimplex2s seed=8 improve=xy fbm octaves=4
 //! ```
 //!
 //! | setting | value | default |
@@ -49,6 +50,7 @@
 //! | `metric=` | `euclidean`, `squared`, `manhattan` or `chebyshev` (cellular noise, [`Metric`]) | `euclidean` |
 //! | `jitter=` | how far cellular noise's points stray from their cells' centres, `0` to `1` ([`Cellular::with_jitter`]) | `1` |
 //! | `covariance=` | `low-pass` or `band-pass` (Wiener noise, [`Covariance`]) | `low-pass` |
+//! | `improve=` | `standard`, `xy` or `xz`: the plane the lattice is turned to serve (OpenSimplex2 and OpenSimplex2S, [`Improve`]) | `standard` |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
 //!
@@ -106,7 +108,7 @@ use crate::impulse::{
 use crate::lattice::{
     CNoise, CubicValueNoise, MNoise, OriginalPerlin, Periodic, Perlin, ValueNoise, WhiteNoise,
 };
-use crate::simplex::Simplex;
+use crate::simplex::{Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
     TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
@@ -153,11 +155,16 @@ pub enum Base {
     /// [`CubicValueNoise`]: value noise with Catmull-Rom interpolation, 1D–4D. Text:
     /// `value-cubic`.
     ValueCubic,
+    /// [`OpenSimplex2`]: KdotJPG's OpenSimplex2, 1D–4D (the seed as an `i64`). Text:
+    /// `opensimplex2`.
+    OpenSimplex2,
+    /// [`OpenSimplex2S`]: KdotJPG's OpenSimplex2S, 1D–4D. Text: `opensimplex2s`.
+    OpenSimplex2S,
 }
 
 impl Base {
     /// Every base, in the order of the enum.
-    pub const ALL: [Base; 15] = [
+    pub const ALL: [Base; 17] = [
         Base::Perlin,
         Base::OriginalPerlin,
         Base::Value,
@@ -173,6 +180,8 @@ impl Base {
         Base::Cellular,
         Base::White,
         Base::ValueCubic,
+        Base::OpenSimplex2,
+        Base::OpenSimplex2S,
     ];
 
     /// The name in the text form.
@@ -194,6 +203,8 @@ impl Base {
             Base::Cellular => "cellular",
             Base::White => "white",
             Base::ValueCubic => "value-cubic",
+            Base::OpenSimplex2 => "opensimplex2",
+            Base::OpenSimplex2S => "opensimplex2s",
         }
     }
 
@@ -236,6 +247,12 @@ impl Base {
         matches!(self, Base::Multiband | Base::White | Base::ValueCubic)
     }
 
+    /// Whether the noise has an OpenSimplex2 lattice orientation ([`Improve`]).
+    #[must_use]
+    pub const fn is_open_simplex(self) -> bool {
+        matches!(self, Base::OpenSimplex2 | Base::OpenSimplex2S)
+    }
+
     /// Whether the noise reads a wavelet tile (and has a [`Tiling`]).
     #[must_use]
     pub const fn is_wavelet(self) -> bool {
@@ -276,6 +293,8 @@ pub struct Spec {
     output: Output,
     metric: Metric,
     jitter: f32,
+    /// OpenSimplex2's orientation; the default for every other base.
+    improve: Improve,
     fractal: Option<(Kind, Octaves)>,
 }
 
@@ -306,6 +325,7 @@ impl Spec {
             output: Output::F1,
             metric: Metric::Euclidean,
             jitter: 1.0,
+            improve: Improve::Standard,
             fractal: None,
         }
     }
@@ -654,6 +674,26 @@ impl Spec {
         self.jitter
     }
 
+    /// OpenSimplex2 or OpenSimplex2S with its lattice turned for `improve`.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::NotOpenSimplex`] unless the base is [`Base::OpenSimplex2`] or
+    /// [`Base::OpenSimplex2S`].
+    pub fn with_improve(mut self, improve: Improve) -> Result<Self, Error> {
+        if !self.base.is_open_simplex() {
+            return Err(Error::NotOpenSimplex(self.base.name()));
+        }
+        self.improve = improve;
+        Ok(self)
+    }
+
+    /// OpenSimplex2's orientation (the default for other bases).
+    #[must_use]
+    pub const fn improve(&self) -> Improve {
+        self.improve
+    }
+
     /// Wiener noise with `covariance`.
     ///
     /// # Errors
@@ -819,6 +859,12 @@ impl Spec {
                 _ => Any::Wiener4(WienerNoise::new(s).with_covariance(self.covariance)),
             },
             Base::Simplex => Any::Simplex(Simplex::new(s)),
+            Base::OpenSimplex2 => {
+                Any::OpenSimplex2(OpenSimplex2::new(i64::from(s)).improving(self.improve))
+            }
+            Base::OpenSimplex2S => {
+                Any::OpenSimplex2S(OpenSimplex2S::new(i64::from(s)).improving(self.improve))
+            }
             Base::White | Base::ValueCubic => {
                 let white = WhiteNoise::new(s).with_distribution(self.distribution);
                 if self.base == Base::White {
@@ -934,6 +980,13 @@ impl fmt::Display for Spec {
             )?;
             decimal::write_f32(f, self.jitter)?;
         }
+        if self.base.is_open_simplex() {
+            f.write_str(match self.improve {
+                Improve::Standard => " improve=standard",
+                Improve::XY => " improve=xy",
+                Improve::XZ => " improve=xz",
+            })?;
+        }
         if self.base == Base::Wiener {
             f.write_str(match self.covariance {
                 Covariance::LowPass => " covariance=low-pass",
@@ -1036,10 +1089,12 @@ impl core::error::Error for ParseError {}
 
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
-     wavelet, multiband, sparse, wiener, gabor, simplex, cellular, white, value-cubic)";
+     wavelet, multiband, sparse, wiener, gabor, simplex, cellular, white, value-cubic, \
+     opensimplex2, opensimplex2s)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
      distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
-     direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, fbm, turbulence, ridged, octaves=, \
+     direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, improve=, fbm, \
+     turbulence, ridged, octaves=, \
      lacunarity=, gain=)";
 
 impl FromStr for Spec {
@@ -1090,6 +1145,7 @@ impl FromStr for Spec {
                 "output" => &mut seen.output,
                 "metric" => &mut seen.metric,
                 "jitter" => &mut seen.jitter,
+                "improve" => &mut seen.improve,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -1137,6 +1193,13 @@ impl FromStr for Spec {
                     position: at,
                     expected: "cellular settings only for cellular noise",
                     refused: Some(Error::NotCellular(base.name())),
+                });
+            }
+            if key == "improve" && !base.is_open_simplex() {
+                return Err(ParseError {
+                    position: at,
+                    expected: "an orientation only for OpenSimplex2 and OpenSimplex2S",
+                    refused: Some(Error::NotOpenSimplex(base.name())),
                 });
             }
             if key == "covariance" && base != Base::Wiener {
@@ -1208,6 +1271,16 @@ impl FromStr for Spec {
                     const E: &str = "a jitter in [0, 1]";
                     let v = decimal::parse_f32(needs_value(E)?).ok_or(err(value_at, E))?;
                     spec = spec.with_jitter(v).map_err(|e| refused(value_at, E, e))?;
+                }
+                "improve" => {
+                    const E: &str = "an orientation (standard, xy, xz)";
+                    let improve = match needs_value(E)? {
+                        "standard" => Improve::Standard,
+                        "xy" => Improve::XY,
+                        "xz" => Improve::XZ,
+                        _ => return Err(err(value_at, E)),
+                    };
+                    spec = spec.with_improve(improve).map_err(|e| refused(at, E, e))?;
                 }
                 "covariance" => {
                     const E: &str = "a covariance (low-pass, band-pass)";
@@ -1482,6 +1555,7 @@ struct Seen {
     output: bool,
     metric: bool,
     jitter: bool,
+    improve: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -1634,6 +1708,8 @@ enum Any<S: Tiles> {
     Gabor2(Gabor<2>),
     Gabor3(Gabor<3>),
     Simplex(Simplex),
+    OpenSimplex2(OpenSimplex2),
+    OpenSimplex2S(OpenSimplex2S),
     Cellular(Cellular),
     White(WhiteNoise),
     Cubic(CubicValueNoise),
@@ -1772,6 +1848,8 @@ macro_rules! spec_noise {
                     Any::M61(n) => with_period(n, period, op),
                     Any::M4093(n) => with_period(n, period, op),
                     Any::Simplex(n) => op.run(n),
+                    Any::OpenSimplex2(n) => op.run(n),
+                    Any::OpenSimplex2S(n) => op.run(n),
                     Any::Cellular(n) => op.run(n),
                     Any::White(n) => op.run(n),
                     Any::Cubic(n) => op.run(n),

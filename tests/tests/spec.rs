@@ -516,6 +516,8 @@ fn every_noise_type_in_core_is_described() {
         ("Cellular", "cellular"),
         ("WhiteNoise", "white"),
         ("CubicValueNoise", "value-cubic"),
+        ("OpenSimplex2", "opensimplex2"),
+        ("OpenSimplex2S", "opensimplex2s"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -565,12 +567,6 @@ fn every_noise_type_in_core_is_described() {
             "FlowSum",
             "not yet described (open, issue 19 point 8), as Flow",
         ),
-        (
-            "OpenSimplex2",
-            "not yet described (open, issue 19 point 8): described, it adds 10.7 KB to the demo's \
-             module, over issue 4's 150 KB (branch opensimplex-spec); waits on issue 20's demo",
-        ),
-        ("OpenSimplex2S", "not yet described, as OpenSimplex2"),
         (
             "Windy",
             "a texture over a noise: not yet described (open, issue 19 point 8; the demo's \
@@ -750,6 +746,71 @@ fn simplex_specs_sample_their_typed_noise_bit_for_bit() {
     assert_eq!(
         Spec::new(Base::Simplex, 0).with_period(&[4]).unwrap_err(),
         Error::NotPeriodic("simplex")
+    );
+}
+
+/// OpenSimplex2 and OpenSimplex2S specs sample the typed noises bit for bit (value and
+/// gradient, f32 and I16F16, 1D–4D, every orientation, under a fractal sum); `improve=` prints
+/// and reads back, and is refused for other noises; no period.
+#[test]
+fn open_simplex_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(190);
+    for (text, improve) in [
+        ("standard", Improve::Standard),
+        ("xy", Improve::XY),
+        ("xz", Improve::XZ),
+    ] {
+        let fast: Spec = format!("opensimplex2 seed=9 improve={text}")
+            .parse()
+            .expect("valid");
+        let typed = OpenSimplex2::new(9).improving(improve);
+        same_bits::<1, _>(&fast, &typed, &mut rng);
+        same_bits::<2, _>(&fast, &typed, &mut rng);
+        same_bits::<3, _>(&fast, &typed, &mut rng);
+        same_bits::<4, _>(&fast, &typed, &mut rng);
+        assert_eq!(
+            fast.to_string(),
+            format!("opensimplex2 seed=9 improve={text}")
+        );
+        let smooth: Spec = format!("opensimplex2s seed=4294967295 improve={text}")
+            .parse()
+            .expect("valid");
+        let typed = OpenSimplex2S::new(4_294_967_295).improving(improve);
+        same_bits::<2, _>(&smooth, &typed, &mut rng);
+        same_bits::<3, _>(&smooth, &typed, &mut rng);
+        same_bits::<4, _>(&smooth, &typed, &mut rng);
+        assert_eq!(smooth.improve(), improve);
+    }
+    let fbm: Spec = "opensimplex2s seed=2 improve=xy ridged octaves=4"
+        .parse()
+        .expect("valid");
+    same_bits::<3, _>(
+        &fbm,
+        &Fractal::ridged(
+            OpenSimplex2S::new(2).improving(Improve::XY),
+            Octaves::new(4, 1.99, 0.5).unwrap(),
+        ),
+        &mut rng,
+    );
+    assert_eq!(
+        "opensimplex2".parse::<Spec>().unwrap().to_string(),
+        "opensimplex2 seed=0 improve=standard"
+    );
+    let e = "simplex improve=xy".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::NotOpenSimplex("simplex")));
+    assert_eq!(
+        Spec::new(Base::Perlin, 0)
+            .with_improve(Improve::XZ)
+            .unwrap_err(),
+        Error::NotOpenSimplex("perlin")
+    );
+    assert!("opensimplex2 improve=yz".parse::<Spec>().is_err());
+    assert_eq!(
+        "opensimplex2 period=4"
+            .parse::<Spec>()
+            .unwrap_err()
+            .refused(),
+        Some(Error::NotPeriodic("opensimplex2"))
     );
 }
 
@@ -1073,6 +1134,8 @@ fn consumers_take_their_noises_from_the_description() {
                             | Base::Cellular
                             | Base::White
                             | Base::ValueCubic
+                            | Base::OpenSimplex2
+                            | Base::OpenSimplex2S
                     ),
                 "{base}"
             );
