@@ -108,6 +108,14 @@ pub enum Error {
     /// An OpenSimplex2 orientation ([`Improve`](crate::simplex::Improve)) asked for another
     /// noise.
     NotOpenSimplex(&'static str),
+    /// A texture or flow setting asked for a noise that does not have it (see
+    /// [`Spec`](crate::spec::Spec)): the noise's name and the setting's.
+    NoSetting {
+        /// The noise's name in the text form.
+        noise: &'static str,
+        /// The setting's name in the text form.
+        setting: &'static str,
+    },
     /// A noise asked for in a dimension it does not have (see [`Spec::build`]).
     ///
     /// [`Spec::build`]: crate::spec::Spec::build
@@ -275,6 +283,9 @@ impl fmt::Display for Error {
                 f,
                 "{noise} noise has no lattice orientation (improve= is for OpenSimplex2 and OpenSimplex2S)"
             ),
+            Error::NoSetting { noise, setting } => {
+                write!(f, "{noise} noise has no {setting}= setting")
+            }
             Error::Dimension { noise, dims } => {
                 write!(f, "{noise} noise has no {dims}D form")
             }

@@ -316,6 +316,21 @@ fn random_spec(rng: &mut Rng) -> Spec {
         }
         .expect("in range");
     }
+    if base.texture_settings().is_some() && rng.next_u64().is_multiple_of(2) {
+        let [a, b] = match base {
+            Base::PolkaDots => [rng.f64_in(0.0, 0.5), rng.f64_in(0.0, 1.0)],
+            Base::Wood | Base::WoodOlano => [rng.f64_in(0.01, 1024.0), rng.f64_in(-1024.0, 1024.0)],
+            _ => [rng.f64_in(-1024.0, 1024.0), rng.f64_in(-1024.0, 1024.0)],
+        };
+        spec = spec.with_texture([a as f32, b as f32]).expect("in range");
+    }
+    if base == Base::Flow && rng.next_u64().is_multiple_of(2) {
+        spec = spec
+            .with_angle(rng.f64_in(-100.0, 100.0) as f32)
+            .expect("finite")
+            .with_flow_sum(rng.f64_in(0.0, 16.0) as f32, rng.f64_in(-16.0, 16.0) as f32)
+            .expect("in range");
+    }
     if base == Base::Wiener && rng.next_u64().is_multiple_of(2) {
         spec = spec.with_covariance(Covariance::BandPass).expect("wiener");
     }
@@ -518,6 +533,13 @@ fn every_noise_type_in_core_is_described() {
         ("CubicValueNoise", "value-cubic"),
         ("OpenSimplex2", "opensimplex2"),
         ("OpenSimplex2S", "opensimplex2s"),
+        ("Flow", "flow"),
+        ("FlowSum", "flow fbm"),
+        ("Windy", "windy"),
+        ("Wrinkled", "wrinkled"),
+        ("Marble", "marble, marble-olano"),
+        ("Wood", "wood, wood-olano"),
+        ("PolkaDots", "polka-dots"),
     ];
     // Types that implement Noise but are not noises of their own.
     let not_noises: &[(&str, &str)] = &[
@@ -526,6 +548,10 @@ fn every_noise_type_in_core_is_described() {
             "Perlin's values with a speed table: described as perlin",
         ),
         ("SpecNoise", "the description itself"),
+        (
+            "Differenced",
+            "private: a texture's gradient by central differences, in the description",
+        ),
         (
             "Layers",
             "private: a spec's base and periodic wrap, under its fractal sum",
@@ -559,23 +585,6 @@ fn every_noise_type_in_core_is_described() {
             "Warp",
             "not yet: the description has no grammar for a noise warped by others (open, issue 19 point 8)",
         ),
-        (
-            "Flow",
-            "not yet described (open, issue 19 point 8; the demo's size budget waits on issue 20)",
-        ),
-        (
-            "FlowSum",
-            "not yet described (open, issue 19 point 8), as Flow",
-        ),
-        (
-            "Windy",
-            "a texture over a noise: not yet described (open, issue 19 point 8; the demo's \
-             size budget waits on issue 20)",
-        ),
-        ("Wrinkled", "a texture, as Windy"),
-        ("Marble", "a texture, as Windy"),
-        ("Wood", "a texture, as Windy"),
-        ("PolkaDots", "a texture, as Windy"),
     ];
     let mut found = std::collections::BTreeSet::new();
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/src");
@@ -1118,8 +1127,7 @@ fn consumers_take_their_noises_from_the_description() {
             "{what} ({path}) does not take its noises from bandnoise::spec"
         );
     }
-    // Every base is a lattice noise the helper knows, a wavelet, impulse, Wiener, simplex or
-    // cellular noise.
+    // Every base is a lattice noise the helper knows, or one of the other families.
     for base in Base::ALL {
         if base.is_lattice() {
             let _ = bandnoise_tests::Lattice::of(base, 0);
@@ -1127,6 +1135,7 @@ fn consumers_take_their_noises_from_the_description() {
             assert!(
                 base.is_wavelet()
                     || base.is_impulse()
+                    || base.is_texture()
                     || matches!(
                         base,
                         Base::Wiener
@@ -1136,9 +1145,206 @@ fn consumers_take_their_noises_from_the_description() {
                             | Base::ValueCubic
                             | Base::OpenSimplex2
                             | Base::OpenSimplex2S
+                            | Base::Flow
                     ),
                 "{base}"
             );
         }
     }
+}
+
+/// `spec` built for `D` dimensions samples `typed` (a noise without an analytic gradient) bit
+/// for bit in f32, f64 and I16F16, on a grid, with the same bound; its gradient is the central
+/// difference `(n(p + h·eₐ) − n(p − h·eₐ)) · 512`, `h = 2⁻¹⁰`, of the typed noise.
+fn same_values<const D: usize, N>(spec: &Spec, typed: &N, rng: &mut Rng)
+where
+    N: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>,
+    SpecNoise<D>: NoiseGradient<f32, D> + NoiseGradient<I16F16, D> + Noise<f64, D>,
+{
+    let built = spec.build::<D>().expect("builds");
+    for _ in 0..200 {
+        let q: [I16F16; D] = rng.exact_point(100);
+        let f = bandnoise_tests::to_f32(q);
+        let v: f32 = typed.sample(f);
+        assert_eq!(built.sample(f).to_bits(), v.to_bits(), "{spec} at {f:?}");
+        let d = f.map(f64::from);
+        let (a, b): (f64, f64) = (built.sample(d), typed.sample(d));
+        assert_eq!(a.to_bits(), b.to_bits(), "{spec} f64");
+        assert_eq!(built.sample(q), typed.sample(q), "{spec} I16F16");
+        let h = 1.0 / 1024.0;
+        let slope: [f32; D] = core::array::from_fn(|a| {
+            let (mut ahead, mut behind) = (f, f);
+            ahead[a] += h;
+            behind[a] -= h;
+            let (x, y): (f32, f32) = (typed.sample(ahead), typed.sample(behind));
+            (x - y) * 512.0
+        });
+        let (value, gradient) = built.sample_with_gradient(f);
+        assert_eq!(value.to_bits(), v.to_bits());
+        assert_eq!(
+            gradient.map(f32::to_bits),
+            slope.map(f32::to_bits),
+            "{spec}"
+        );
+        let hq = I16F16::from_bits(64);
+        let slope: [I16F16; D] = core::array::from_fn(|a| {
+            let (mut ahead, mut behind) = (q, q);
+            ahead[a] = ahead[a].saturating_add(hq);
+            behind[a] = behind[a].saturating_sub(hq);
+            let (x, y): (I16F16, I16F16) = (typed.sample(ahead), typed.sample(behind));
+            x.saturating_sub(y).saturating_mul(I16F16::from_num(512))
+        });
+        assert_eq!(
+            built.sample_with_gradient(q).1,
+            slope,
+            "{spec} I16F16 gradient"
+        );
+    }
+    let grid = Grid::<f32, D>::new(
+        [-3.3; D],
+        [0.37; D],
+        core::array::from_fn(|a| [40, 3, 2, 2][a]),
+    );
+    let (mut a, mut b) = (vec![0.0f32; grid.len()], vec![0.0f32; grid.len()]);
+    built.fill_grid(&grid, &mut a).expect("sized");
+    typed.fill_grid(&grid, &mut b).expect("sized");
+    assert_eq!(
+        a.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        b.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
+        "{spec} grid"
+    );
+    assert_eq!(
+        Noise::<f32, D>::amplitude_bound(&built),
+        Noise::<f32, D>::amplitude_bound(typed)
+    );
+}
+
+/// Flow noise's spec samples `Flow` bit for bit (with its analytic gradient); its `fbm` sum is
+/// Perlin and Neyret's `FlowSum` (spin, advection), its other sums plain fractal sums; the
+/// settings print, read back, and are refused for other noises and out of range.
+#[test]
+fn flow_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(191);
+    let flow: Spec = "flow seed=3 angle=1.25".parse().expect("valid");
+    assert_eq!(
+        flow.to_string(),
+        "flow seed=3 angle=0.25 spin=2 advection=0"
+    );
+    let typed = Flow::new(3).with_angle(0.25).unwrap();
+    same_bits::<2, _>(&flow, &typed, &mut rng);
+    let sum: Spec =
+        "flow seed=3 angle=0.25 fbm octaves=5 lacunarity=2 gain=0.5 spin=1 advection=0.5"
+            .parse()
+            .expect("valid");
+    let octaves = Octaves::new(5, 2.0, 0.5).unwrap();
+    let typed_sum = FlowSum::new(typed.clone(), octaves)
+        .with_spin(1.0)
+        .unwrap()
+        .with_advection(0.5)
+        .unwrap();
+    same_values::<2, _>(&sum, &typed_sum, &mut rng);
+    assert_eq!(sum.to_string().parse::<Spec>(), Ok(sum));
+    let turbulence: Spec = "flow seed=3 angle=0.25 turbulence octaves=3"
+        .parse()
+        .unwrap();
+    same_bits::<2, _>(
+        &turbulence,
+        &Fractal::turbulence(typed, Octaves::new(3, 1.99, 0.5).unwrap()),
+        &mut rng,
+    );
+    assert!(matches!(flow.build::<3>(), Err(Error::Dimension { .. })));
+    let e = "perlin angle=0.5".parse::<Spec>().unwrap_err();
+    assert_eq!(
+        e.refused(),
+        Some(Error::NoSetting {
+            noise: "perlin",
+            setting: "angle"
+        })
+    );
+    assert_eq!(e.position(), 7);
+    let e = "flow advection=1 spin=17".parse::<Spec>().unwrap_err();
+    assert_eq!(e.refused(), Some(Error::FlowSetting(17.0)));
+    assert_eq!(e.position(), 22);
+    assert!("flow angle=nan".parse::<Spec>().is_err());
+    assert_eq!(
+        Spec::new(Base::Flow, 0).with_angle(f32::INFINITY),
+        Err(Error::FlowAngle(f32::INFINITY))
+    );
+}
+
+/// The textures' specs sample the typed textures bit for bit, 1D–4D, with their defaults and
+/// with settings; the settings print, read back, and are refused for other noises and out of
+/// range (at the position of the value refused).
+#[test]
+fn texture_specs_sample_their_typed_textures_bit_for_bit() {
+    let mut rng = Rng::from_env(192);
+    fn all_dims<N>(spec: &Spec, typed: &N, rng: &mut Rng)
+    where
+        N: Noise<f32, 1> + Noise<f64, 1> + Noise<I16F16, 1>,
+        N: Noise<f32, 2> + Noise<f64, 2> + Noise<I16F16, 2>,
+        N: Noise<f32, 3> + Noise<f64, 3> + Noise<I16F16, 3>,
+        N: Noise<f32, 4> + Noise<f64, 4> + Noise<I16F16, 4>,
+    {
+        same_values::<1, _>(spec, typed, rng);
+        same_values::<2, _>(spec, typed, rng);
+        same_values::<3, _>(spec, typed, rng);
+        same_values::<4, _>(spec, typed, rng);
+        assert_eq!(spec.to_string().parse::<Spec>().as_ref(), Ok(spec));
+        assert!(spec.base().is_texture());
+    }
+    let parse = |t: &str| t.parse::<Spec>().expect("valid");
+    all_dims(&parse("windy seed=4"), &Windy::new(4), &mut rng);
+    all_dims(&parse("wrinkled seed=5"), &Wrinkled::new(5), &mut rng);
+    all_dims(&parse("marble seed=6"), &Marble::new(6), &mut rng);
+    all_dims(&parse("marble-olano seed=6"), &Marble::olano(6), &mut rng);
+    all_dims(&parse("wood seed=7"), &Wood::new(7), &mut rng);
+    all_dims(&parse("wood-olano seed=7"), &Wood::olano(7), &mut rng);
+    all_dims(&parse("polka-dots seed=8"), &PolkaDots::new(8), &mut rng);
+    let marble = parse("marble seed=6 variation=0.5 scale=3");
+    assert_eq!(marble.to_string(), "marble seed=6 scale=3 variation=0.5");
+    let typed = Marble::with_noise(Marble::new(6).noise().clone(), 3.0, 0.5).unwrap();
+    all_dims(&marble, &typed, &mut rng);
+    let wood = parse("wood-olano seed=1 rings=5 amount=-0.25");
+    let typed = Wood::with_noise(Wood::olano(1).noise().clone(), 5.0, -0.25).unwrap();
+    all_dims(&wood, &typed, &mut rng);
+    let dots = parse("polka-dots seed=2 chance=0.75 radius=0.2");
+    let typed = PolkaDots::new(2)
+        .with_radius(0.2)
+        .unwrap()
+        .with_chance(0.75)
+        .unwrap();
+    all_dims(&dots, &typed, &mut rng);
+    assert_eq!(
+        parse("polka-dots").to_string(),
+        "polka-dots seed=0 radius=0.35 chance=0.5"
+    );
+    // Settings for other noises, and out of range.
+    let e = "marble rings=2".parse::<Spec>().unwrap_err();
+    assert_eq!(
+        e.refused(),
+        Some(Error::NoSetting {
+            noise: "marble",
+            setting: "rings"
+        })
+    );
+    assert_eq!(e.position(), 7);
+    let e = "polka-dots radius=0.1 chance=1.5"
+        .parse::<Spec>()
+        .unwrap_err();
+    assert!(matches!(
+        e.refused(),
+        Some(Error::TextureSetting { name: "chance", .. })
+    ));
+    assert_eq!(e.position(), 29);
+    let e = "wood rings=0".parse::<Spec>().unwrap_err();
+    assert!(matches!(
+        e.refused(),
+        Some(Error::TextureSetting { name: "rings", .. })
+    ));
+    assert_eq!(e.position(), 11);
+    assert!(matches!(
+        Spec::new(Base::Windy, 0).with_texture([1.0, 1.0]),
+        Err(Error::NoSetting { noise: "windy", .. })
+    ));
+    assert!("windy period=4".parse::<Spec>().is_err());
 }

@@ -42,7 +42,8 @@ fn unit_from_height<R: Real>(v: R, gain: R) -> R {
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Windy<N = Perlin> {
-    wind: Fractal<N>,
+    /// The wind's sum, over the waves' noise (one noise, held once).
+    wind: Fractal<()>,
     waves: Fractal<N>,
     colors: ColorMap,
 }
@@ -55,12 +56,12 @@ impl Windy<Perlin> {
     }
 }
 
-impl<N: Clone> Windy<N> {
+impl<N> Windy<N> {
     /// pbrt's windy waves over `noise`.
     #[must_use]
     pub fn with_noise(noise: N) -> Self {
         Self {
-            wind: Fractal::fbm(noise.clone(), Octaves::pbrt(3)),
+            wind: Fractal::fbm((), Octaves::pbrt(3)),
             waves: Fractal::fbm(noise, Octaves::pbrt(6)),
             colors: ColorMap::WATER,
         }
@@ -79,12 +80,16 @@ impl<N: Noise<R, D>, R: Real, const D: usize> Noise<R, D> for Windy<N> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         let tenth = R::from_setting(TENTH.0, TENTH.1);
-        let wind = self.wind.sample(scaled(p, tenth));
+        let wind = self
+            .wind
+            .with_noise(self.waves.noise())
+            .sample(scaled(p, tenth));
         wind.abs().saturating_mul(self.waves.sample(p)).canonical()
     }
 
     fn amplitude_bound(&self) -> f32 {
-        Noise::<R, D>::amplitude_bound(&self.wind) * Noise::<R, D>::amplitude_bound(&self.waves)
+        let wind = self.wind.with_noise(self.waves.noise());
+        Noise::<R, D>::amplitude_bound(&wind) * Noise::<R, D>::amplitude_bound(&self.waves)
     }
 }
 
@@ -92,9 +97,11 @@ impl<N: Noise<R, D>, R: Real, const D: usize> FilteredNoise<R, D> for Windy<N> {
     /// pbrt's: both sums anti-aliased by the footprint, the wind's scaled as its point is.
     fn sample_filtered(&self, p: [R; D], dpdx: [R; D], dpdy: [R; D]) -> R {
         let tenth = R::from_setting(TENTH.0, TENTH.1);
-        let wind =
-            self.wind
-                .sample_filtered(scaled(p, tenth), scaled(dpdx, tenth), scaled(dpdy, tenth));
+        let wind = self.wind.with_noise(self.waves.noise()).sample_filtered(
+            scaled(p, tenth),
+            scaled(dpdx, tenth),
+            scaled(dpdy, tenth),
+        );
         let waves = self.waves.sample_filtered(p, dpdx, dpdy);
         wind.abs().saturating_mul(waves).canonical()
     }
