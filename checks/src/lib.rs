@@ -272,7 +272,8 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 /// Checksums of what is not a noise description: Gabor surface noise and filtering, projected
 /// sampling, wavelet gradients, filtering and infinite noise, the cell hash and generator, the
 /// kernels' `exp` and `cos`, [`TabledPerlin`] (Perlin's values through its table),
-/// OpenSimplex2 and OpenSimplex2S (not yet in the description), and the textures.
+/// OpenSimplex2 and OpenSimplex2S in each orientation with gradients, and the textures'
+/// patterns, colour maps and filtered dots (their values are also among the descriptions).
 const OTHER: [&str; 14] = [
     "gabor surface",
     "gabor filtered",

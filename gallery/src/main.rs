@@ -201,6 +201,11 @@ fn run(o: &Options) -> Result<(), String> {
             // Distances from 0: black at the feature points.
             render_from_zero::<f32>(o, &format!("{base}-2d"), &noise, 1.0)?;
             render_from_zero::<I16F16>(o, &format!("{base}-2d-fixed"), &noise, 1.0)?;
+        } else if base.is_texture() && base != Base::Windy {
+            // Patterns in [0, 1]; wrinkled's turbulence mostly below 1.5.
+            let top = if base == Base::Wrinkled { 1.5 } else { 1.0 };
+            render_from_zero::<f32>(o, &format!("{base}-2d"), &noise, top)?;
+            render_from_zero::<I16F16>(o, &format!("{base}-2d-fixed"), &noise, top)?;
         } else if base.is_impulse() || base == Base::Wiener {
             // Variance 1 and a bound far above what occurs: show ±3σ.
             render_scaled::<f32, _>(o, &format!("{base}-2d"), &noise, 3.0)?;
@@ -324,28 +329,29 @@ fn render_curl(o: &Options) -> Result<(), String> {
 /// by two simplex noises, OpenSimplex2 and OpenSimplex2S, and Olano's 4-octave turbulence of
 /// mNoise (3D, the slice z = 0.37).
 fn render_flow_and_warp(o: &Options) -> Result<(), String> {
-    for (name, angle) in [("0", 0.0), ("0.125", 0.125), ("0.25", 0.25)] {
-        let flow = Flow::new(o.seed)
-            .with_angle(angle)
-            .map_err(|e| e.to_string())?;
-        render_with(o, &format!("flow-2d-angle-{name}"), 1.0, 1.0, |p, _| {
-            flow.sample(p)
-        })?;
+    // Through the description: flow noise at three angles, and its fBm advected.
+    let flow = [
+        ("flow-2d-angle-0", "angle=0", 1.0),
+        ("flow-2d-angle-0.125", "angle=0.125", 1.0),
+        ("flow-2d-angle-0.25", "angle=0.25", 1.0),
+        (
+            "flow-fbm-advected-2d",
+            "fbm octaves=5 lacunarity=2 gain=0.5 advection=0.5",
+            1.5,
+        ),
+    ];
+    for (name, settings, top) in flow {
+        let text = format!("flow seed={} {settings}", o.seed);
+        let spec: Spec = text.parse().map_err(|e| format!("{text:?}: {e}"))?;
+        let noise = build(&spec)?;
+        render_with(o, name, top, 1.0, |p, _| Noise::<f32, 2>::sample(&noise, p))?;
     }
-    let octaves = Octaves::new(5, 2.0, 0.5).map_err(|e| e.to_string())?;
-    let sum = FlowSum::new(Flow::new(o.seed), octaves)
-        .with_advection(0.5)
-        .map_err(|e| e.to_string())?;
-    render_with(o, "flow-fbm-advected-2d", 1.5, 1.0, |p, _| sum.sample(p))?;
     let field = Components::new([Simplex::new(o.seed ^ 1), Simplex::new(o.seed ^ 2)]);
     let warp = Warp::new(Perlin::new(o.seed), field, 1.0).map_err(|e| e.to_string())?;
     render_with(o, "warp-perlin-2d", 1.0, 1.0, |p, _| warp.sample(p))?;
-    // OpenSimplex2 and OpenSimplex2S (2D, and 3D turned for a vertical z: the slice z = 0.37).
-    let fast = OpenSimplex2::new(i64::from(o.seed));
-    let smooth = OpenSimplex2S::new(i64::from(o.seed));
-    render_with(o, "opensimplex2-2d", 1.0, 1.0, |p, _| fast.sample(p))?;
-    render_with(o, "opensimplex2s-2d", 1.0, 1.0, |p, _| smooth.sample(p))?;
-    let terrain = smooth.improving(Improve::XY);
+    // OpenSimplex2S in 3D turned for a vertical z (the slice z = 0.37; its 2D images come
+    // from the description).
+    let terrain = OpenSimplex2S::new(i64::from(o.seed)).improving(Improve::XY);
     render_with(o, "opensimplex2s-3d-improve-xy", 1.0, 1.0, |p, _| {
         terrain.sample([p[0], p[1], 0.37])
     })?;
