@@ -34,7 +34,7 @@
 //! | setting | value | default |
 //! |---|---|---|
 //! | `seed=` | `0..=4294967295` | 0 |
-//! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice noises) | not periodic |
+//! | `period=` | 1 to 4 periods in `1..=65536`, comma-separated, one per axis (lattice, white and cubic value noise: [`Base::is_periodic`]) | not periodic |
 //! | `tiling=` | `blended`, `varied` or `periodic` (wavelet and multiband noise, [`Tiling`]) | `blended` |
 //! | `first=` | the first band of multiband noise, `-24..=8` ([`Bands`]) | 0 |
 //! | `bands=` | up to 16 band weights, comma-separated (multiband noise) | `1,0.5,0.25,0.125,0.0625` |
@@ -283,6 +283,14 @@ impl Base {
         )
     }
 
+    /// Whether the noise takes a period (`period=`, [`Spec::with_period`]): the lattice
+    /// noises, white noise and cubic value noise (each lattice coordinate wrapped before it is
+    /// hashed).
+    #[must_use]
+    pub const fn is_periodic(self) -> bool {
+        self.is_lattice() || matches!(self, Base::White | Base::ValueCubic)
+    }
+
     /// Whether the noise is made of random impulses (and has impulse settings: density,
     /// count, weights).
     #[must_use]
@@ -423,12 +431,12 @@ impl Spec {
     ///
     /// # Errors
     ///
-    /// [`Error::NotPeriodic`] for the noises that are not lattice noises (wavelet noise: use
+    /// [`Error::NotPeriodic`] for the noises that do not take one ([`Base::is_periodic`]; wavelet noise: use
     /// [`Tiling::Periodic`]; simplex noise, whose lattice is not aligned with the axes),
     /// [`Error::PeriodAxes`] for no period or more than 4, [`Error::Period`] for a period
     /// outside `1..=65536`.
     pub fn with_period(mut self, period: &[u32]) -> Result<Self, Error> {
-        if !self.base.is_lattice() {
+        if !self.base.is_periodic() {
             return Err(Error::NotPeriodic(self.base.name()));
         }
         if period.is_empty() || period.len() > 4 {
@@ -2239,8 +2247,8 @@ macro_rules! spec_noise {
                     $(Any::$flow(n) => op.run(n),
                     Any::$flow_sum(n) => op.run(&Differenced(n)),)?
                     Any::Cellular(n) => op.run(n),
-                    Any::White(n) => op.run(n),
-                    Any::Cubic(n) => op.run(n),
+                    Any::White(n) => with_period(n, period, op),
+                    Any::Cubic(n) => with_period(n, period, op),
                     Any::$sparse(n) => op.run(n),
                     Any::$wiener(n) => op.run(n),
                     $(Any::$gabor(n) => op.run(n),)?

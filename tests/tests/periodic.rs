@@ -5,6 +5,7 @@
 
 use bandnoise::batch::Grid;
 use bandnoise::prelude::*;
+use bandnoise::wavelet::Distribution;
 use bandnoise::{Error, lattice::Periodic};
 use bandnoise_tests::{Rng, Special};
 
@@ -143,6 +144,37 @@ fn every_lattice_noise_repeats_with_any_period() {
         &mut rng
     );
     every_type_and_dim!(value_noise, "value", (), &mut rng);
+    // Lewis's lattice white noise and its Catmull-Rom interpolant (4ᴰ lattice points wrapped).
+    let cubic = CubicValueNoise::new(4);
+    every_type_and_dim!(gradient_noise, "value-cubic", &cubic, &mut rng);
+    every_type_and_dim!(gradient_noise, "value-cubic owned", cubic, &mut rng);
+    let white = WhiteNoise::new(4).with_distribution(Distribution::Gaussian);
+    every_type_and_dim!(gradient_noise, "white", &white, &mut rng);
+    every_type_and_dim!(gradient_noise, "white owned", white, &mut rng);
+}
+
+/// Wrapping white and cubic value noise changes only the lattice points outside the first
+/// period: where every point a sample reads lies in `0..P`, the values are the unwrapped
+/// noise's, bit for bit (and elsewhere they are not all).
+#[test]
+fn white_and_cubic_noise_wrap_only_outside_the_first_period() {
+    let mut rng = Rng::from_env(161);
+    let (white, cubic) = (WhiteNoise::new(9), CubicValueNoise::new(9));
+    let period = [7u32, 300];
+    let (pw, pc) = (
+        Periodic::new(white, period).unwrap(),
+        Periodic::new(cubic, period).unwrap(),
+    );
+    let mut differ = 0;
+    for _ in 0..2000 {
+        // Cubic value noise reads the points c − 1 … c + 2: c in 1..P − 2 stays inside.
+        let p = [rng.f64_in(1.0, 5.0) as f32, rng.f64_in(1.0, 298.0) as f32];
+        assert_eq!(pc.sample(p).to_bits(), cubic.sample(p).to_bits(), "{p:?}");
+        assert_eq!(pw.sample(p).to_bits(), white.sample(p).to_bits(), "{p:?}");
+        let outside = [rng.f64_in(-50.0, 0.0) as f32, rng.f64_in(-50.0, 0.0) as f32];
+        differ += usize::from(pc.sample(outside) != cubic.sample(outside));
+    }
+    assert!(differ > 1900, "{differ}");
 }
 
 /// Value noise (no gradient), wrapped to random periods.

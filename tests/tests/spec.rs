@@ -253,7 +253,7 @@ fn multiband_specs_sample_their_typed_noise_bit_for_bit() {
 fn random_spec(rng: &mut Rng) -> Spec {
     let base = Base::ALL[rng.next_u64() as usize % Base::ALL.len()];
     let mut spec = Spec::new(base, rng.next_u64() as u32);
-    if base.is_lattice() && rng.next_u64().is_multiple_of(2) {
+    if base.is_periodic() && rng.next_u64().is_multiple_of(2) {
         let axes = 1 + rng.next_u64() as usize % 4;
         let period: Vec<u32> = (0..axes)
             .map(|_| 1 + (rng.next_u64() % 65536) as u32)
@@ -939,10 +939,30 @@ fn white_and_cubic_specs_sample_their_typed_noise_bit_for_bit() {
         &Fractal::fbm(CubicValueNoise::new(9), Octaves::new(4, 1.99, 0.5).unwrap()),
         &mut rng,
     );
+    // Periodic: each lattice coordinate wrapped (`lattice::Periodic`).
+    let tile: Spec = "white seed=3 period=4,9 distribution=gaussian"
+        .parse()
+        .expect("valid");
+    let white = WhiteNoise::new(3).with_distribution(Distribution::Gaussian);
+    same_bits::<2, _>(&tile, &Periodic::new(white, [4, 9]).unwrap(), &mut rng);
+    let tile: Spec = "value-cubic seed=3 period=5,6,7 ridged octaves=3 lacunarity=2"
+        .parse()
+        .expect("valid");
+    same_bits::<3, _>(
+        &tile,
+        &Fractal::ridged(
+            Periodic::new(CubicValueNoise::new(3), [5, 6, 7]).unwrap(),
+            Octaves::new(3, 2.0, 0.5).unwrap(),
+        ),
+        &mut rng,
+    );
+    assert_eq!(
+        tile.to_string(),
+        "value-cubic seed=3 period=5,6,7 distribution=uniform ridged octaves=3 lacunarity=2 gain=0.5"
+    );
     for (text, refused) in [
         ("perlin distribution=uniform", Error::NotMultiband("perlin")),
-        ("white period=4,4", Error::NotPeriodic("white")),
-        ("value-cubic period=4", Error::NotPeriodic("value-cubic")),
+        ("simplex period=4", Error::NotPeriodic("simplex")),
         ("white bands=1", Error::NotMultiband("white")),
     ] {
         let e = text.parse::<Spec>().unwrap_err();

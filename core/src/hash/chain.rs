@@ -193,6 +193,17 @@ impl<const D: usize> Wrap<D> {
         self.period
     }
 
+    /// The coordinate `c + k` of axis `axis` wrapped into `0..period` (an axis beyond the
+    /// periods is not wrapped).
+    #[inline]
+    pub(crate) fn cell(&self, axis: usize, c: i32, k: i32) -> u32 {
+        match self.period.get(axis) {
+            // Periods are in 1..=2^16: the sum and the remainder fit i64, the result a u32.
+            Some(&p) => (i64::from(c) + i64::from(k)).rem_euclid(i64::from(p.max(1))) as u32,
+            None => c.wrapping_add(k) as u32,
+        }
+    }
+
     /// The lower and upper corner coordinates of `cell` translated by `shift` (a noise's seed
     /// translation), wrapped into `0..period`.
     #[inline]

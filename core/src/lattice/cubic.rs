@@ -1,5 +1,6 @@
 //! Value noise with cubic (Catmull-Rom) interpolation (Lewis 1989 §2.3): [`CubicValueNoise`].
 
+use super::Periodic;
 use super::white::WhiteNoise;
 use crate::Real;
 use crate::hash::chain::ChainHash;
@@ -29,6 +30,8 @@ use crate::wavelet::Distribution;
 ///   2D, 2·10⁴ in 3D, 2·10³ in 4D): 1.19, 1.24, 1.19, 1.14: past the lattice values' `1 − 1/N`
 ///   (Catmull-Rom overshoots), well within the bound.
 /// * **Gradient**: analytic ([`NoiseGradient`](crate::NoiseGradient)), continuous.
+/// * **Period**: none (2³² cells), or any period per axis from 1 to 2¹⁶ cells wrapped by
+///   [`Periodic`] (each of the 4ᴰ lattice points wrapped before it is hashed).
 ///
 /// # Examples
 ///
@@ -81,10 +84,15 @@ impl CubicValueNoise {
         self.white
     }
 
-    /// The value and, where `GRADIENT`, the gradient at `p`.
+    /// The value and, where `GRADIENT`, the gradient at `p`, the lattice point `c + k` of axis
+    /// `a` hashed as `cell(a, c, k)` (its coordinate, or wrapped to a period).
     #[inline]
-    fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(&self, p: [R; D]) -> (R, [R; D]) {
-        let (cell, frac) = split_point(p);
+    fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(
+        &self,
+        p: [R; D],
+        cell: impl Fn(usize, i32, i32) -> u32 + Copy,
+    ) -> (R, [R; D]) {
+        let (cells, frac) = split_point(p);
         let mut w = [[R::ZERO; 4]; D];
         let mut dw = [[R::ZERO; 4]; D];
         for a in 0..D {
@@ -98,9 +106,9 @@ impl CubicValueNoise {
         }
         let start = self.white.hash().start();
         let (value, gradient) = if GRADIENT {
-            self.sum_with_gradient(start, &cell, &w, &dw)
+            self.sum_with_gradient(start, &cells, &w, &dw, cell)
         } else {
-            (self.sum(start, &cell, &w), [R::ZERO; D])
+            (self.sum(start, &cells, &w, cell), [R::ZERO; D])
         };
         (value.canonical(), gradient.map(R::canonical))
     }
@@ -112,31 +120,50 @@ impl CubicValueNoise {
     /// the compiler inlines into one loop nest per dimension (a recursive function over the
     /// axes took four times the instructions: a call per lattice point).
     #[inline]
-    fn sum<R: Real, const D: usize>(&self, h: u32, cells: &[i32; D], w: &[[R; 4]; D]) -> R {
+    fn sum<R: Real, const D: usize>(
+        &self,
+        h: u32,
+        cells: &[i32; D],
+        w: &[[R; 4]; D],
+        cell: impl Fn(usize, i32, i32) -> u32 + Copy,
+    ) -> R {
         let value = |h: u32| self.white.value_of_hash::<R>(h);
         // `a % D`: a level that a dimension below 4 never reaches, kept in bounds.
-        let (c, w) = (|a: usize| cells[a % D], |a: usize| &w[a % D]);
+        let (c, w) = (|a: usize| (a, cells[a % D]), |a: usize| &w[a % D]);
         match D {
-            1 => self.axis(h, c(0), w(0), value),
-            2 => self.axis(h, c(0), w(0), |h| self.axis(h, c(1), w(1), value)),
-            3 => self.axis(h, c(0), w(0), |h| {
-                self.axis(h, c(1), w(1), |h| self.axis(h, c(2), w(2), value))
+            1 => self.axis(h, c(0), w(0), cell, value),
+            2 => self.axis(h, c(0), w(0), cell, |h| {
+                self.axis(h, c(1), w(1), cell, value)
             }),
-            _ => self.axis(h, c(0), w(0), |h| {
-                self.axis(h, c(1), w(1), |h| {
-                    self.axis(h, c(2), w(2), |h| self.axis(h, c(3), w(3), value))
+            3 => self.axis(h, c(0), w(0), cell, |h| {
+                self.axis(h, c(1), w(1), cell, |h| {
+                    self.axis(h, c(2), w(2), cell, value)
+                })
+            }),
+            _ => self.axis(h, c(0), w(0), cell, |h| {
+                self.axis(h, c(1), w(1), cell, |h| {
+                    self.axis(h, c(2), w(2), cell, |h| {
+                        self.axis(h, c(3), w(3), cell, value)
+                    })
                 })
             }),
         }
     }
 
-    /// One axis of [`sum`](Self::sum): `Σ_k w[k] · inner(hash step of c + k)` over the four
-    /// lattice points `c − 1 … c + 2`.
+    /// One axis `a` of [`sum`](Self::sum): `Σ_k w[k] · inner(hash step of c + k)` over the
+    /// four lattice points `c − 1 … c + 2`.
     #[inline(always)]
-    fn axis<R: Real>(&self, h: u32, c: i32, w: &[R; 4], inner: impl Fn(u32) -> R) -> R {
+    fn axis<R: Real>(
+        &self,
+        h: u32,
+        (a, c): (usize, i32),
+        w: &[R; 4],
+        cell: impl Fn(usize, i32, i32) -> u32,
+        inner: impl Fn(u32) -> R,
+    ) -> R {
         let mut value = R::ZERO;
         for (k, wk) in (-1..).zip(w) {
-            let hk = self.white.hash().step(h, c.wrapping_add(k) as u32);
+            let hk = self.white.hash().step(h, cell(a, c, k));
             value = value + wk.mul_fraction(inner(hk));
         }
         value
@@ -150,6 +177,7 @@ impl CubicValueNoise {
         cells: &[i32],
         w: &[[R; 4]],
         dw: &[[R; 4]],
+        cell: impl Fn(usize, i32, i32) -> u32 + Copy,
     ) -> (R, [R; D]) {
         let (Some((&c, cells)), Some((wa, w)), Some((da, dw))) =
             (cells.split_first(), w.split_first(), dw.split_first())
@@ -159,8 +187,8 @@ impl CubicValueNoise {
         let axis = D - 1 - cells.len();
         let (mut value, mut gradient) = (R::ZERO, [R::ZERO; D]);
         for (k, (wk, dk)) in (-1..).zip(wa.iter().zip(da)) {
-            let hk = self.white.hash().step(h, c.wrapping_add(k) as u32);
-            let (v, g) = self.sum_with_gradient::<R, D>(hk, cells, w, dw);
+            let hk = self.white.hash().step(h, cell(axis, c, k));
+            let (v, g) = self.sum_with_gradient::<R, D>(hk, cells, w, dw, cell);
             value = value + wk.mul_fraction(v);
             for (total, g) in gradient.iter_mut().zip(g).skip(axis + 1) {
                 *total = *total + wk.mul_fraction(g);
@@ -198,7 +226,7 @@ macro_rules! cubic_impls {
         impl<R: Real> crate::Noise<R, $d> for CubicValueNoise {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
-                self.evaluate::<R, $d, false>(p).0
+                self.evaluate::<R, $d, false>(p, unwrapped).0
             }
             fn amplitude_bound(&self) -> f32 {
                 // 1.25ᴰ · the largest lattice value, plus rounding.
@@ -216,10 +244,59 @@ macro_rules! cubic_impls {
         impl<R: Real> crate::NoiseGradient<R, $d> for CubicValueNoise {
             #[inline]
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
-                self.evaluate::<R, $d, true>(p)
+                self.evaluate::<R, $d, true>(p, unwrapped)
+            }
+        }
+
+        impl<R: Real> crate::Noise<R, $d> for Periodic<CubicValueNoise, $d> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                crate::Noise::sample(&self.with_noise(self.noise()), p)
+            }
+            fn amplitude_bound(&self) -> f32 {
+                crate::Noise::<R, $d>::amplitude_bound(self.noise())
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Periodic<CubicValueNoise, $d> {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                self.with_noise(self.noise()).sample_with_gradient(p)
+            }
+        }
+
+        /// The noise with each lattice coordinate wrapped to its axis's period before it
+        /// is hashed: periodic bit for bit (where all 4ᴰ lattice points lie in `0..P`, the
+        /// unwrapped noise's values).
+        impl<R: Real> crate::Noise<R, $d> for Periodic<&CubicValueNoise, $d> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                let wrap = self.wrap();
+                self.noise()
+                    .evaluate::<R, $d, false>(p, |a, c, k| wrap.cell(a, c, k))
+                    .0
+            }
+            fn amplitude_bound(&self) -> f32 {
+                crate::Noise::<R, $d>::amplitude_bound(*self.noise())
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Periodic<&CubicValueNoise, $d> {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                let wrap = self.wrap();
+                self.noise()
+                    .evaluate::<R, $d, true>(p, |a, c, k| wrap.cell(a, c, k))
             }
         }
     )*};
+}
+
+/// The lattice point `c + k` of any axis, unwrapped: its coordinate (modulo 2³², as the hash
+/// takes it).
+#[inline(always)]
+fn unwrapped(_: usize, c: i32, k: i32) -> u32 {
+    c.wrapping_add(k) as u32
 }
 
 cubic_impls!(1, 2, 3, 4);

@@ -27,8 +27,10 @@ use crate::hash::chain::Wrap;
 /// and 8 along y: `sample([x + 16, y]) == sample([x, y + 8]) == sample([x, y])`, bit for bit in
 /// fixed point and wherever the shifted coordinate is exact in a float. It works for every
 /// lattice noise ([`Perlin`](super::Perlin), [`OriginalPerlin`](super::OriginalPerlin),
-/// [`ValueNoise`](super::ValueNoise), [`CNoise`](super::CNoise), [`MNoise`](super::MNoise)), in point, gradient and
-/// batch sampling, with the same bounds as the noise it wraps.
+/// [`ValueNoise`](super::ValueNoise), [`CNoise`](super::CNoise), [`MNoise`](super::MNoise)), and for
+/// [`WhiteNoise`](super::WhiteNoise) and [`CubicValueNoise`](super::CubicValueNoise) (each of the
+/// 4ᴰ lattice points it interpolates wrapped), in point, gradient and batch sampling, with the
+/// same bounds as the noise it wraps.
 ///
 /// A period equal to the noise's own (256 cells for the permutation noises, `M` for
 /// `MNoise<M>`) gives the noise itself, bit for bit. A longer period folds each wrapped
@@ -86,6 +88,11 @@ impl<N, const D: usize> Periodic<N, D> {
     #[must_use]
     pub fn noise(&self) -> &N {
         &self.noise
+    }
+
+    /// The wrap of each lattice coordinate.
+    pub(crate) fn wrap(&self) -> &Wrap<D> {
+        &self.wrap
     }
 
     /// `noise` with these (validated) periods.

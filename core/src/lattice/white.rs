@@ -1,5 +1,6 @@
 //! Lattice white noise (Lewis 1989 §2.2): [`WhiteNoise`] and its tables.
 
+use super::Periodic;
 use crate::Real;
 use crate::hash::CellHash;
 use crate::lattice::kernel::split_point;
@@ -176,7 +177,8 @@ const fn normal_quantile(p: f64) -> f64 {
 ///   [`Gaussian`](Distribution::Gaussian) ([`with_distribution`](Self::with_distribution)).
 /// * **Range**: the table's largest magnitude ([`largest`](Self::largest), [`table_value`]):
 ///   `1 − 1/N` for uniform values, 3.2964 for Gaussian ones.
-/// * **Period**: 2³² cells per axis (the hash uses each cell's whole coordinate).
+/// * **Period**: 2³² cells per axis (the hash uses each cell's whole coordinate), or any
+///   period per axis from 1 to 2¹⁶ cells wrapped by [`Periodic`].
 ///
 /// # Examples
 ///
@@ -288,7 +290,52 @@ macro_rules! white_impls {
     )*};
 }
 
+macro_rules! periodic_white_impls {
+    ($($d:literal),*) => {$(
+        impl<R: Real> crate::Noise<R, $d> for Periodic<WhiteNoise, $d> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                crate::Noise::sample(&self.with_noise(self.noise()), p)
+            }
+            fn amplitude_bound(&self) -> f32 {
+                self.noise().largest()
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Periodic<WhiteNoise, $d> {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                (crate::Noise::sample(self, p), [R::ZERO; $d])
+            }
+        }
+
+        /// The value of the cell wrapped to the period along each axis: periodic bit for
+        /// bit, and the unwrapped noise's values on the cells `0..P`.
+        impl<R: Real> crate::Noise<R, $d> for Periodic<&WhiteNoise, $d> {
+            #[inline]
+            fn sample(&self, p: [R; $d]) -> R {
+                let (cell, _) = split_point(p);
+                let wrap = self.wrap();
+                // Wrapped coordinates are below 2¹⁶: the same `i32`s as unwrapped ones there.
+                let wrapped: [i32; $d] = core::array::from_fn(|a| wrap.cell(a, cell[a], 0) as i32);
+                self.noise().cell_value(wrapped)
+            }
+            fn amplitude_bound(&self) -> f32 {
+                self.noise().largest()
+            }
+        }
+
+        impl<R: Real> crate::NoiseGradient<R, $d> for Periodic<&WhiteNoise, $d> {
+            #[inline]
+            fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
+                (crate::Noise::sample(self, p), [R::ZERO; $d])
+            }
+        }
+    )*};
+}
+
 white_impls!(1, 2, 3, 4);
+periodic_white_impls!(1, 2, 3, 4);
 crate::noise::inherent_amplitude_bound!(WhiteNoise, []);
 
 #[cfg(test)]
