@@ -91,7 +91,7 @@ await test('every noise kind gives a different image', async () => {
   const hashes = new Map();
   // The page lists the noises the wasm module takes from bandnoise's description.
   const kinds = await page.evaluate(() => [...document.getElementById('kind').options].map((o) => o.value));
-  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener', 'gabor', 'simplex', 'cellular', 'white', 'value-cubic']);
+  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener', 'gabor', 'simplex', 'cellular', 'white', 'value-cubic', 'opensimplex2', 'opensimplex2s', 'windy', 'wrinkled', 'marble', 'marble-olano', 'wood', 'wood-olano', 'polka-dots']);
   for (const kind of kinds) {
     await set('kind', kind);
     const s = await canvas('noise');
