@@ -73,11 +73,12 @@ fi
 (
     cd firmware
     cargo fmt --all -- --check
-    # The Cortex-M0's 256 KiB of flash hold one number type's checksum code at a time (and
-    # fixed point's in two parts), built for size (firmware/Cargo.toml, profile m0-checks).
+    # The Cortex-M0's 256 KiB of flash hold one part of one number type's checksum code at a
+    # time (the descriptions, the others), built for size (firmware/Cargo.toml, m0-checks).
     cargo run --profile m0-checks -p firmware-cortex-m --bin checks-fixed --target thumbv6m-none-eabi
     cargo run --profile m0-checks -p firmware-cortex-m --bin checks-fixed-other --target thumbv6m-none-eabi
     cargo run --profile m0-checks -p firmware-cortex-m --bin checks-float --target thumbv6m-none-eabi
+    cargo run --profile m0-checks -p firmware-cortex-m --bin checks-float-other --target thumbv6m-none-eabi
     cargo run --release -p firmware-cortex-m --bin checks --target thumbv7em-none-eabihf
     cargo run --release -p firmware-riscv --bin checks --target riscv32imc-unknown-none-elf
     # The LED-strip example: 100 frames of fire, checksum equal to the host's.

@@ -1,4 +1,5 @@
-// The body of the `checks`, `checks-fixed`, `checks-fixed-other` and `checks-float` programs
+// The body of the `checks`, `checks-fixed`, `checks-fixed-other`, `checks-float` and
+// `checks-float-other` programs
 // (`include!`d: each defines `FIXED` and `FLOAT`, the number types whose checksums it
 // compares, and `PARTS`, which of them: bandnoise_checks::Parts).
 
@@ -21,6 +22,8 @@ fn main() -> ! {
         (true, false, bandnoise_checks::DESCRIPTIONS) => "I16F16, the descriptions",
         (true, false, bandnoise_checks::OTHERS) => "I16F16, the others",
         (true, false, _) => "I16F16",
+        (false, true, bandnoise_checks::DESCRIPTIONS) => "f32, the descriptions",
+        (false, true, bandnoise_checks::OTHERS) => "f32, the others",
         _ => "f32",
     };
     hprintln!(
