@@ -152,7 +152,7 @@ fn uniform_multiband() -> Spec {
 
 /// Composed descriptions (fractal sums, periodic wraps, non-default settings): a name, the
 /// spec, its dimensions and the range of the points.
-const COMPOSED: usize = 15;
+const COMPOSED: usize = 18;
 
 /// Entry `i` of [`composed`]. Out of line, so the whole list is on the stack only while it
 /// is built, not while a checksum runs (the Cortex-M's 16 KiB of RAM: with the list held
@@ -204,6 +204,16 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
     let gaussian_cubic = gaussian_cubic
         .with_distribution(Distribution::Gaussian)
         .unwrap_or(gaussian_cubic);
+    let warped = Spec::new(Base::Perlin, 2).with_fractal(Kind::Fbm, octaves);
+    // In range, and the noise not periodic.
+    let warped = warped.with_warp(0.5).unwrap_or(warped);
+    let flow = Spec::new(Base::Flow, 3);
+    // Flow noise's settings, in range.
+    let flow = flow
+        .with_angle(0.3)
+        .and_then(|s| s.with_flow_sum(2.0, 0.5))
+        .unwrap_or(flow)
+        .with_fractal(Kind::Fbm, octaves);
     let varied = |base| {
         // Accepted for a wavelet base.
         Spec::new(base, 3)
@@ -238,6 +248,14 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
             2,
             2000,
         ),
+        (
+            "periodic value-cubic 2D",
+            periodic(Base::ValueCubic, 4, &[3, 300]),
+            2,
+            2000,
+        ),
+        ("warped fbm perlin 2D", warped, 2, 200),
+        ("advected flow fbm 2D", flow, 2, 200),
         ("band-pass wiener 2D", band_pass, 2, 200),
         ("band-pass wiener 3D", band_pass, 3, 200),
         (

@@ -94,6 +94,11 @@ pub enum Error {
     /// A domain-warp amplitude that is not finite or beyond ±1024 (see
     /// [`Warp::new`](crate::vector::Warp::new)).
     WarpAmplitude(f32),
+    /// A warp and a period asked for together (see [`Spec::with_warp`]): the displacement does
+    /// not repeat, so the warped noise would not.
+    ///
+    /// [`Spec::with_warp`]: crate::spec::Spec::with_warp
+    WarpedPeriod,
     /// A flow-noise angle that is not finite (see
     /// [`Flow::with_angle`](crate::simplex::Flow::with_angle)).
     FlowAngle(f32),
@@ -262,6 +267,9 @@ impl fmt::Display for Error {
                 f,
                 "Gabor magnitude {} must be finite and within ±1024",
                 Shortest(*k)
+            ),
+            Error::WarpedPeriod => f.write_str(
+                "a warped noise does not repeat: a warp and a period cannot be combined",
             ),
             Error::WarpAmplitude(a) => write!(
                 f,

@@ -8,7 +8,8 @@
 //! [`NoiseGradient`], batches included), through one `match` per sample or batch.
 //!
 //! The layers nest in the only order the crate's types allow: a base noise, wrapped by
-//! [`Periodic`] (lattice noises only), summed by [`Fractal`]. Any other shape cannot be written.
+//! [`Periodic`] (lattice noises only), summed by [`Fractal`], its domain warped by [`Warp`].
+//! Any other shape cannot be written.
 //!
 //! # Text form
 //!
@@ -29,6 +30,7 @@
 //! flow seed=3 angle=0.25 fbm octaves=5 spin=2 advection=0.5
 //! marble seed=1 scale=2 variation=0.4
 //! polka-dots seed=7 radius=0.3 chance=0.6
+//! perlin seed=2 fbm octaves=5 warp=0.8
 //! ```
 //!
 //! | setting | value | default |
@@ -59,6 +61,7 @@
 //! | `radius=`, `chance=` | polka dots' ([`PolkaDots::with_radius`], [`PolkaDots::with_chance`]) | `0.35`, `0.5` |
 //! | `angle=` | flow noise's angle in turns, any finite value, kept in `[0, 1)` ([`Flow::with_angle`]) | `0` |
 //! | `spin=`, `advection=` | flow noise's `fbm` sum, Perlin and Neyret's flow fBm ([`FlowSum`]): `0..=16`, `±16` | `2`, `0` |
+//! | `warp=` | the amplitude of a domain warp by independent OpenSimplex2 noises, within `±1024`, not with a period ([`Spec::with_warp`]) | no warp |
 //! | `fbm`, `turbulence`, `ridged` | a fractal sum of that [`Kind`] | no sum |
 //! | `octaves=`, `lacunarity=`, `gain=` | [`Octaves`] settings (need a kind) | [`Octaves::default`] |
 //!
@@ -123,6 +126,7 @@ use crate::lattice::{
 };
 use crate::simplex::{Flow, FlowSum, Improve, OpenSimplex2, OpenSimplex2S, Simplex};
 use crate::texture::{Marble, PolkaDots, Windy, Wood, Wrinkled};
+use crate::vector::{Components, Warp};
 use crate::wavelet::{
     Bands, DEFAULT_BANDS, Distribution, MAX_BANDS, Multiband, QuantizedTile2, QuantizedTile3,
     TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData, TileVariance, Tiling, Wavelet,
@@ -377,6 +381,8 @@ pub struct Spec {
     /// OpenSimplex2's orientation; the default for every other base.
     improve: Improve,
     fractal: Option<(Kind, Octaves)>,
+    /// The warp's amplitude, if the noise is warped.
+    warp: Option<f32>,
 }
 
 impl Spec {
@@ -416,6 +422,7 @@ impl Spec {
             },
             flow: [0.0, 2.0, 0.0],
             fractal: None,
+            warp: None,
         }
     }
 
@@ -438,6 +445,9 @@ impl Spec {
     pub fn with_period(mut self, period: &[u32]) -> Result<Self, Error> {
         if !self.base.is_periodic() {
             return Err(Error::NotPeriodic(self.base.name()));
+        }
+        if self.warp.is_some() {
+            return Err(Error::WarpedPeriod);
         }
         if period.is_empty() || period.len() > 4 {
             return Err(Error::PeriodAxes {
@@ -889,6 +899,31 @@ impl Spec {
         Ok(self)
     }
 
+    /// The same noise (summed, if it is) with its domain warped by `amplitude` times a
+    /// displacement of `D` independent [`OpenSimplex2`] noises ([`Warp`] over
+    /// [`Components`]; component `a` seeded `seed · 2⁸ + a + 1`): Lewis's stochastic
+    /// deformation, smooth and without a lattice's axis-aligned artefacts. The gradient is
+    /// the chain rule's.
+    ///
+    /// # Errors
+    ///
+    /// [`Error::WarpAmplitude`] unless `amplitude` is finite and within ±1024;
+    /// [`Error::WarpedPeriod`] for a periodic noise (the displacement does not repeat).
+    pub fn with_warp(mut self, amplitude: f32) -> Result<Self, Error> {
+        Warp::new((), (), amplitude)?;
+        if self.axes > 0 {
+            return Err(Error::WarpedPeriod);
+        }
+        self.warp = Some(amplitude);
+        Ok(self)
+    }
+
+    /// The warp's amplitude, if the noise is warped.
+    #[must_use]
+    pub const fn warp(&self) -> Option<f32> {
+        self.warp
+    }
+
     /// The same noise summed by a [`Fractal`] of `kind` with `octaves`.
     #[must_use]
     pub const fn with_fractal(mut self, kind: Kind, octaves: Octaves) -> Self {
@@ -1095,10 +1130,19 @@ impl Spec {
                 _ => Any::Gabor3(self.gabor::<3>()?),
             },
         };
+        let warp = match self.warp {
+            None => None,
+            Some(amplitude) => {
+                let seed = i64::from(self.seed) << 8;
+                let components = core::array::from_fn(|a| OpenSimplex2::new(seed + a as i64 + 1));
+                Some(Warp::new((), Components::new(components), amplitude)?)
+            }
+        };
         Ok(SpecNoise {
             spec: *self,
             layers: Layers { base, period },
             fractal,
+            warp,
         })
     }
 }
@@ -1228,6 +1272,10 @@ impl fmt::Display for Spec {
             f.write_str(" gain=")?;
             decimal::write_f32(f, o.gain())?;
         }
+        if let Some(amplitude) = self.warp {
+            f.write_str(" warp=")?;
+            decimal::write_f32(f, amplitude)?;
+        }
         Ok(())
     }
 }
@@ -1317,7 +1365,7 @@ const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, band
      distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
      direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, improve=, \
      scale=, variation=, rings=, amount=, radius=, chance=, angle=, spin=, advection=, fbm, \
-     turbulence, ridged, octaves=, lacunarity=, gain=)";
+     turbulence, ridged, octaves=, lacunarity=, gain=, warp=)";
 
 impl FromStr for Spec {
     type Err = ParseError;
@@ -1379,6 +1427,7 @@ impl FromStr for Spec {
                 "angle" => &mut seen.angle,
                 "spin" => &mut seen.spin,
                 "advection" => &mut seen.advection,
+                "warp" => &mut seen.warp,
                 "fbm" | "turbulence" | "ridged" => &mut seen.kind,
                 "octaves" => &mut seen.count,
                 "lacunarity" => &mut seen.lacunarity,
@@ -1523,6 +1572,11 @@ impl FromStr for Spec {
                     if let Some(t) = texture.get_mut(slot) {
                         *t = Some((value_at, v));
                     }
+                }
+                "warp" => {
+                    const E: &str = "a warp amplitude within ±1024, for a noise without a period";
+                    let v = decimal::parse_f32(needs_value(E)?).ok_or(err(value_at, E))?;
+                    spec = spec.with_warp(v).map_err(|e| refused(value_at, E, e))?;
                 }
                 "angle" => {
                     const E: &str = "an angle in turns: a plain decimal";
@@ -1891,6 +1945,7 @@ struct Seen {
     angle: bool,
     spin: bool,
     advection: bool,
+    warp: bool,
     kind: bool,
     count: bool,
     lacunarity: bool,
@@ -2068,6 +2123,8 @@ pub struct SpecNoise<const D: usize, S: Tiles = F32Tiles> {
     layers: Layers<D, S>,
     /// The sum, built and validated once, wrapped around the layers at each call.
     fractal: Option<Fractal<()>>,
+    /// The warp, wrapped around the sum (or the layers) at each call.
+    warp: Option<Warp<(), Components<OpenSimplex2, D>>>,
 }
 
 /// The base noise and its periodic wrap: what a spec's fractal sum adds octaves of. The sum
@@ -2269,9 +2326,13 @@ macro_rules! spec_noise {
         impl<S: Tiles> SpecNoise<$d, S> {
             /// Runs `op` on the typed noise this spec describes.
             fn visit<R: Real, O: Op<R, $d>>(&self, op: O) -> O::Out {
-                match &self.fractal {
-                    None => self.layers.visit(op),
-                    Some(sum) => op.run(&sum.with_noise(&self.layers)),
+                match (&self.warp, &self.fractal) {
+                    (None, None) => self.layers.visit(op),
+                    (None, Some(sum)) => op.run(&sum.with_noise(&self.layers)),
+                    (Some(warp), None) => op.run(&warp.with_noise(&self.layers)),
+                    (Some(warp), Some(sum)) => {
+                        op.run(&warp.with_noise(sum.with_noise(&self.layers)))
+                    }
                 }
             }
         }

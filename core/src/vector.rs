@@ -219,6 +219,19 @@ impl<N, V> Warp<N, V> {
         })
     }
 
+    /// `noise` warped by this displacement and amplitude.
+    pub(crate) fn with_noise<M>(&self, noise: M) -> Warp<M, V>
+    where
+        V: Clone,
+    {
+        Warp {
+            noise,
+            displacement: self.displacement.clone(),
+            amplitude: self.amplitude,
+            amplitude_fixed: self.amplitude_fixed,
+        }
+    }
+
     /// The noise warped.
     #[must_use]
     pub const fn noise(&self) -> &N {

@@ -331,6 +331,11 @@ fn random_spec(rng: &mut Rng) -> Spec {
             .with_flow_sum(rng.f64_in(0.0, 16.0) as f32, rng.f64_in(-16.0, 16.0) as f32)
             .expect("in range");
     }
+    if spec.period().is_none() && rng.next_u64().is_multiple_of(4) {
+        spec = spec
+            .with_warp(rng.f64_in(-1024.0, 1024.0) as f32)
+            .expect("in range");
+    }
     if base == Base::Wiener && rng.next_u64().is_multiple_of(2) {
         spec = spec.with_covariance(Covariance::BandPass).expect("wiener");
     }
@@ -522,6 +527,7 @@ fn every_noise_type_in_core_is_described() {
         ("MNoise", "mnoise, mnoise4093"),
         ("Periodic", "period="),
         ("Fractal", "fbm, turbulence, ridged"),
+        ("Warp", "warp="),
         ("Wavelet", "wavelet"),
         ("Multiband", "multiband"),
         ("SparseConvolution", "sparse"),
@@ -581,10 +587,6 @@ fn every_noise_type_in_core_is_described() {
             "MixedTurbulence",
             "Olano's turbulence, bit for bit `mnoise turbulence octaves=N lacunarity=2 gain=0.5`",
         ),
-        (
-            "Warp",
-            "not yet: the description has no grammar for a noise warped by others (open, issue 19 point 8)",
-        ),
     ];
     let mut found = std::collections::BTreeSet::new();
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../core/src");
@@ -640,7 +642,7 @@ fn every_noise_type_in_core_is_described() {
     }
     // Every described base name parses.
     for (ty, names) in described {
-        if matches!(*ty, "Periodic" | "Fractal") {
+        if matches!(*ty, "Periodic" | "Fractal" | "Warp") {
             continue;
         }
         for name in names.split(", ") {
@@ -1367,4 +1369,55 @@ fn texture_specs_sample_their_typed_textures_bit_for_bit() {
         Err(Error::NoSetting { noise: "windy", .. })
     ));
     assert!("windy period=4".parse::<Spec>().is_err());
+}
+
+/// A warped spec is `Warp` of the (summed) noise by `Components` of OpenSimplex2 noises seeded
+/// `seed · 2⁸ + a + 1`, bit for bit (value and gradient); the amplitude prints last, reads back,
+/// and is refused out of range and with a period, in either order.
+#[test]
+fn warped_specs_sample_their_typed_noise_bit_for_bit() {
+    let mut rng = Rng::from_env(193);
+    let spec: Spec = "perlin seed=2 warp=0.8 fbm octaves=5 lacunarity=2 gain=0.5"
+        .parse()
+        .expect("valid");
+    assert_eq!(
+        spec.to_string(),
+        "perlin seed=2 fbm octaves=5 lacunarity=2 gain=0.5 warp=0.8"
+    );
+    let field = Components::new([OpenSimplex2::new(513), OpenSimplex2::new(514)]);
+    let typed = Warp::new(
+        Fractal::fbm(Perlin::new(2), Octaves::new(5, 2.0, 0.5).unwrap()),
+        field,
+        0.8,
+    )
+    .unwrap();
+    same_bits::<2, _>(&spec, &typed, &mut rng);
+    let cells: Spec = "cellular seed=1 output=f2-f1 warp=-0.25".parse().unwrap();
+    let field = Components::new([
+        OpenSimplex2::new(257),
+        OpenSimplex2::new(258),
+        OpenSimplex2::new(259),
+    ]);
+    let typed = Warp::new(
+        Cellular::new(1).with_output(Output::F2MinusF1),
+        field,
+        -0.25,
+    )
+    .unwrap();
+    same_bits::<3, _>(&cells, &typed, &mut rng);
+    for (text, refused, at) in [
+        ("perlin period=4 warp=1", Error::WarpedPeriod, 21),
+        ("perlin warp=1 period=4", Error::WarpedPeriod, 21),
+        ("perlin warp=2000", Error::WarpAmplitude(2000.0), 12),
+    ] {
+        let e = text.parse::<Spec>().unwrap_err();
+        assert_eq!((e.refused(), e.position()), (Some(refused), at), "{text}");
+    }
+    assert_eq!(
+        Spec::new(Base::Value, 0)
+            .with_warp(1.0)
+            .unwrap()
+            .with_period(&[4]),
+        Err(Error::WarpedPeriod)
+    );
 }
