@@ -49,7 +49,16 @@ fn same<const D: usize>(
         );
         assert_eq!(a, b, "{what} I16F16 gradient at {p:?}");
     }
-    // An off-lattice grid (step not a power-of-two fraction of a cell).
+    same_grid_and_bound(what, built, typed);
+}
+
+/// `built` and `typed` fill an off-lattice grid (step not a power-of-two fraction of a cell)
+/// with the same bits in f32, and have the same bound.
+fn same_grid_and_bound<const D: usize>(
+    what: &str,
+    built: &impl Noise<f32, D>,
+    typed: &impl Noise<f32, D>,
+) {
     let grid = Grid::<f32, D>::new(
         [-3.3; D],
         [0.37; D],
@@ -64,8 +73,8 @@ fn same<const D: usize>(
         "{what} grid"
     );
     assert_eq!(
-        Noise::<f32, D>::amplitude_bound(built),
-        Noise::<f32, D>::amplitude_bound(typed),
+        built.amplitude_bound(),
+        typed.amplitude_bound(),
         "{what} bound"
     );
 }
@@ -1222,23 +1231,7 @@ where
             "{spec} I16F16 gradient"
         );
     }
-    let grid = Grid::<f32, D>::new(
-        [-3.3; D],
-        [0.37; D],
-        core::array::from_fn(|a| [40, 3, 2, 2][a]),
-    );
-    let (mut a, mut b) = (vec![0.0f32; grid.len()], vec![0.0f32; grid.len()]);
-    built.fill_grid(&grid, &mut a).expect("sized");
-    typed.fill_grid(&grid, &mut b).expect("sized");
-    assert_eq!(
-        a.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
-        b.iter().map(|v| v.to_bits()).collect::<Vec<_>>(),
-        "{spec} grid"
-    );
-    assert_eq!(
-        Noise::<f32, D>::amplitude_bound(&built),
-        Noise::<f32, D>::amplitude_bound(typed)
-    );
+    same_grid_and_bound(&spec.to_string(), &built, typed);
 }
 
 /// Flow noise's spec samples `Flow` bit for bit (with its analytic gradient); its `fbm` sum is
