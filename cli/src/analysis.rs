@@ -1,0 +1,210 @@
+//! The survey's §6 analysis of a noise image (Lagae et al. 2010, "A Survey of Procedural
+//! Noise Functions", §6): the periodogram averaged over blocks (Bartlett's method), its radial
+//! average (power against frequency), and the histogram of standardised values against the
+//! standard normal density.
+
+use std::f64::consts::PI;
+
+/// In-place forward FFT of `re`, `im` (length a power of two), twiddles from `sin`/`cos`.
+fn fft(re: &mut [f64], im: &mut [f64]) {
+    let n = re.len();
+    let mut j = 0;
+    for i in 1..n {
+        let mut bit = n >> 1;
+        while j & bit != 0 {
+            j ^= bit;
+            bit >>= 1;
+        }
+        j |= bit;
+        if i < j {
+            re.swap(i, j);
+            im.swap(i, j);
+        }
+    }
+    let mut len = 2;
+    while len <= n {
+        let angle = -2.0 * PI / len as f64;
+        for start in (0..n).step_by(len) {
+            for k in 0..len / 2 {
+                let (wr, wi) = ((angle * k as f64).cos(), (angle * k as f64).sin());
+                let (a, b) = (start + k, start + k + len / 2);
+                let tr = re[b] * wr - im[b] * wi;
+                let ti = re[b] * wi + im[b] * wr;
+                re[b] = re[a] - tr;
+                im[b] = im[a] - ti;
+                re[a] += tr;
+                im[a] += ti;
+            }
+        }
+        len <<= 1;
+    }
+}
+
+/// The 2D FFT of a `side × side` block (rows, then columns), returning `|F|²`.
+fn power(block: &[f64], side: usize) -> Vec<f64> {
+    let mut re = block.to_vec();
+    let mut im = vec![0.0; re.len()];
+    for (r, i) in re.chunks_mut(side).zip(im.chunks_mut(side)) {
+        fft(r, i);
+    }
+    let (mut cr, mut ci) = (vec![0.0; side], vec![0.0; side]);
+    for x in 0..side {
+        for y in 0..side {
+            cr[y] = re[y * side + x];
+            ci[y] = im[y * side + x];
+        }
+        fft(&mut cr, &mut ci);
+        for y in 0..side {
+            re[y * side + x] = cr[y];
+            im[y * side + x] = ci[y];
+        }
+    }
+    re.iter().zip(&im).map(|(r, i)| r * r + i * i).collect()
+}
+
+/// What [`analyse`] finds.
+pub struct Analysis {
+    /// The values' mean and standard deviation.
+    pub mean: f64,
+    pub std_dev: f64,
+    /// The Bartlett-averaged periodogram, `block × block`, DC in the centre, `|F|²/B²` per
+    /// block (so white noise of variance σ² is flat at σ²).
+    pub periodogram: Vec<f64>,
+    pub block: usize,
+    /// The radially averaged power: `(frequency in cycles per unit, mean power)` for each ring
+    /// of one frequency step, from the first ring past DC to the Nyquist frequency.
+    pub spectrum: Vec<(f64, f64)>,
+    /// The histogram of standardised values: `(bin centre z, density, N(0, 1) density at z)`
+    /// over `[-4, 4]`; values outside are counted in `outside`.
+    pub histogram: Vec<(f64, f64, f64)>,
+    pub outside: usize,
+}
+
+/// The analysis of a `side × side` image (row-major) sampled every `step` units, with the
+/// periodogram averaged over the `(side / block)²` blocks of `block × block`.
+pub fn analyse(values: &[f32], side: usize, step: f64, block: usize, bins: usize) -> Analysis {
+    let n = values.len() as f64;
+    let mean = values.iter().map(|&v| f64::from(v)).sum::<f64>() / n;
+    let variance = values
+        .iter()
+        .map(|&v| (f64::from(v) - mean).powi(2))
+        .sum::<f64>()
+        / n;
+    let std_dev = variance.sqrt();
+    // Bartlett: the mean of the blocks' periodograms, each block's mean removed.
+    let mut periodogram = vec![0.0; block * block];
+    let blocks = side / block;
+    for by in 0..blocks {
+        for bx in 0..blocks {
+            let mut b: Vec<f64> = (0..block * block)
+                .map(|i| {
+                    f64::from(values[(by * block + i / block) * side + bx * block + i % block])
+                })
+                .collect();
+            let m = b.iter().sum::<f64>() / b.len() as f64;
+            b.iter_mut().for_each(|v| *v -= m);
+            for (acc, p) in periodogram.iter_mut().zip(power(&b, block)) {
+                *acc += p;
+            }
+        }
+    }
+    let scale = 1.0 / ((blocks * blocks) as f64 * (block * block) as f64);
+    // Centre DC: swap quadrants.
+    let mut centred = vec![0.0; block * block];
+    let h = block / 2;
+    for y in 0..block {
+        for x in 0..block {
+            centred[((y + h) % block) * block + (x + h) % block] =
+                periodogram[y * block + x] * scale;
+        }
+    }
+    // Radial average over rings of one frequency step, 1/(block · step) cycles per unit.
+    let df = 1.0 / (block as f64 * step);
+    let mut rings = vec![(0.0f64, 0usize); h + 1];
+    for y in 0..block {
+        for x in 0..block {
+            let (fx, fy) = (x as f64 - h as f64, y as f64 - h as f64);
+            let r = (fx * fx + fy * fy).sqrt().round() as usize;
+            if (1..=h).contains(&r) {
+                rings[r].0 += centred[y * block + x];
+                rings[r].1 += 1;
+            }
+        }
+    }
+    let spectrum = rings
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(r, (sum, count))| (r as f64 * df, sum / (*count).max(1) as f64))
+        .collect();
+    // Histogram of z = (v − mean)/σ over [-4, 4].
+    let width = 8.0 / bins as f64;
+    let mut counts = vec![0usize; bins];
+    let mut outside = 0;
+    for &v in values {
+        let z = if std_dev > 0.0 {
+            (f64::from(v) - mean) / std_dev
+        } else {
+            0.0
+        };
+        let bin = ((z + 4.0) / width).floor();
+        if (0.0..bins as f64).contains(&bin) {
+            counts[bin as usize] += 1;
+        } else {
+            outside += 1;
+        }
+    }
+    let histogram = counts
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let z = -4.0 + (i as f64 + 0.5) * width;
+            let normal = (-z * z / 2.0).exp() / (2.0 * PI).sqrt();
+            (z, c as f64 / (n * width), normal)
+        })
+        .collect();
+    Analysis {
+        mean,
+        std_dev,
+        periodogram: centred,
+        block,
+        spectrum,
+        histogram,
+        outside,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_sine_puts_its_power_in_one_ring() {
+        // 4 cycles across a 64-sample block at step 1/16: 1 cycle per unit.
+        let side = 64;
+        let values: Vec<f32> = (0..side * side)
+            .map(|i| (2.0 * PI * 4.0 * (i % side) as f64 / side as f64).sin() as f32)
+            .collect();
+        let a = analyse(&values, side, 1.0 / 16.0, 64, 32);
+        let (f, p) = a
+            .spectrum
+            .iter()
+            .copied()
+            .fold((0.0, 0.0), |best, s| if s.1 > best.1 { s } else { best });
+        assert!((f - 1.0).abs() < 1e-9, "{f}");
+        // Parseval: the cells' mean is the variance ½ (white noise would be flat at it), all
+        // of it in the two cells at ±1 cycle per unit, so the ring's mean is positive.
+        let mean = a.periodogram.iter().sum::<f64>() / (64.0 * 64.0);
+        // (Within f32 rounding of the sine: the values are f32.)
+        assert!((mean - 0.5).abs() < 1e-6 && p > 0.0, "{mean} {p}");
+    }
+
+    #[test]
+    fn the_histogram_is_a_density() {
+        let values: Vec<f32> = (0..4096).map(|i| ((i * 7919) % 4096) as f32).collect();
+        let a = analyse(&values, 64, 0.1, 32, 64);
+        let width = 8.0 / 64.0;
+        let mass: f64 = a.histogram.iter().map(|h| h.1 * width).sum();
+        assert!((mass - 1.0).abs() < 1e-9 && a.outside == 0, "{mass}");
+    }
+}
