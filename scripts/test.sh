@@ -122,5 +122,17 @@ for f in docs/textures/*.png; do
 done
 test "$(ls docs/textures/*.png | wc -l)" = "$(ls target/gallery-textures/*.png | wc -l)"
 
+step "the guide's figures are what the bandnoise command makes"
+rm -rf target/guide
+bash scripts/guide-images.sh target/guide
+for f in docs/guide/*/*.png; do
+    cmp "$f" "target/guide/${f#docs/guide/}" || {
+        echo "error: $f differs from what the bandnoise command makes; re-render with" \
+            "bash scripts/guide-images.sh" >&2
+        exit 1
+    }
+done
+test "$(ls docs/guide/*/*.png | wc -l)" = "$(ls target/guide/*/*.png | wc -l)"
+
 echo
 echo "all bandnoise tests passed"

@@ -258,6 +258,10 @@ impl<const D: usize, T: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>> AllTyp
 #[doc = include_str!("../../README.md")]
 mod readme {}
 
+/// The guide's example (`docs/guide.md`), compiled and run as a doctest.
+#[doc = include_str!("../../docs/guide.md")]
+mod guide {}
+
 /// The power spectrum `|F(kx, ky)|²` of a square grid of samples (side a power of two, row
 /// by row), optionally under a separable Hann window (for fields that are not periodic over the
 /// grid: without it, the jump between the grid's opposite edges spreads power everywhere).
