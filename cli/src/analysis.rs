@@ -5,61 +5,28 @@
 
 use std::f64::consts::PI;
 
-/// In-place forward FFT of `re`, `im` (length a power of two), twiddles from `sin`/`cos`.
-fn fft(re: &mut [f64], im: &mut [f64]) {
-    let n = re.len();
-    let mut j = 0;
-    for i in 1..n {
-        let mut bit = n >> 1;
-        while j & bit != 0 {
-            j ^= bit;
-            bit >>= 1;
-        }
-        j |= bit;
-        if i < j {
-            re.swap(i, j);
-            im.swap(i, j);
-        }
+/// The 2D power spectrum `|F(kx, ky)|²` of a `side × side` grid (row by row; `side` any
+/// size rustfft plans for), by rows then columns: the one 2D transform of the host code (the
+/// analysis here, and the statistical tests through `bandnoise-tests`; the browser demo keeps
+/// its own `f32` transform without `sin`/`cos` for its size budget).
+pub fn power(grid: &[f64], side: usize) -> Vec<f64> {
+    use rustfft::{FftPlanner, num_complex::Complex};
+    let fft = FftPlanner::<f64>::new().plan_fft_forward(side);
+    let mut data: Vec<Complex<f64>> = grid.iter().map(|&v| Complex::new(v, 0.0)).collect();
+    for row in data.chunks_mut(side) {
+        fft.process(row);
     }
-    let mut len = 2;
-    while len <= n {
-        let angle = -2.0 * PI / len as f64;
-        for start in (0..n).step_by(len) {
-            for k in 0..len / 2 {
-                let (wr, wi) = ((angle * k as f64).cos(), (angle * k as f64).sin());
-                let (a, b) = (start + k, start + k + len / 2);
-                let tr = re[b] * wr - im[b] * wi;
-                let ti = re[b] * wi + im[b] * wr;
-                re[b] = re[a] - tr;
-                im[b] = im[a] - ti;
-                re[a] += tr;
-                im[a] += ti;
-            }
-        }
-        len <<= 1;
-    }
-}
-
-/// The 2D FFT of a `side × side` block (rows, then columns), returning `|F|²`.
-fn power(block: &[f64], side: usize) -> Vec<f64> {
-    let mut re = block.to_vec();
-    let mut im = vec![0.0; re.len()];
-    for (r, i) in re.chunks_mut(side).zip(im.chunks_mut(side)) {
-        fft(r, i);
-    }
-    let (mut cr, mut ci) = (vec![0.0; side], vec![0.0; side]);
+    let mut column = vec![Complex::new(0.0, 0.0); side];
     for x in 0..side {
         for y in 0..side {
-            cr[y] = re[y * side + x];
-            ci[y] = im[y * side + x];
+            column[y] = data[y * side + x];
         }
-        fft(&mut cr, &mut ci);
+        fft.process(&mut column);
         for y in 0..side {
-            re[y * side + x] = cr[y];
-            im[y * side + x] = ci[y];
+            data[y * side + x] = column[y];
         }
     }
-    re.iter().zip(&im).map(|(r, i)| r * r + i * i).collect()
+    data.iter().map(|c| c.norm_sqr()).collect()
 }
 
 /// What [`analyse`] finds.

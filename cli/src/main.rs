@@ -3,8 +3,7 @@
 //! histogram against the standard normal). `bandnoise --help` lists the commands and
 //! examples.
 
-mod analysis;
-mod image;
+use bandnoise_cli::{analysis, image};
 
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};

@@ -266,9 +266,7 @@ mod guide {}
 /// by row), optionally under a separable Hann window (for fields that are not periodic over the
 /// grid: without it, the jump between the grid's opposite edges spreads power everywhere).
 pub fn power_spectrum(grid: &[f64], side: usize, hann: bool) -> Vec<f64> {
-    use rustfft::{FftPlanner, num_complex::Complex};
     assert_eq!(grid.len(), side * side);
-    let fft = FftPlanner::<f64>::new().plan_fft_forward(side);
     let window: Vec<f64> = (0..side)
         .map(|i| {
             if hann {
@@ -279,25 +277,12 @@ pub fn power_spectrum(grid: &[f64], side: usize, hann: bool) -> Vec<f64> {
             }
         })
         .collect();
-    let mut data: Vec<Complex<f64>> = grid
+    let windowed: Vec<f64> = grid
         .iter()
         .enumerate()
-        .map(|(i, &v)| Complex::new(v * window[i % side] * window[i / side], 0.0))
+        .map(|(i, &v)| v * window[i % side] * window[i / side])
         .collect();
-    for row in data.chunks_mut(side) {
-        fft.process(row);
-    }
-    let mut column = vec![Complex::new(0.0, 0.0); side];
-    for x in 0..side {
-        for y in 0..side {
-            column[y] = data[y * side + x];
-        }
-        fft.process(&mut column);
-        for y in 0..side {
-            data[y * side + x] = column[y];
-        }
-    }
-    data.iter().map(|c| c.norm_sqr()).collect()
+    bandnoise_cli::analysis::power(&windowed, side)
 }
 
 /// The signed frequency of FFT bin `k` of `side` bins, in cycles per unit for samples
