@@ -29,6 +29,18 @@ pub fn power(grid: &[f64], side: usize) -> Vec<f64> {
     data.iter().map(|c| c.norm_sqr()).collect()
 }
 
+/// The values' mean and (population) standard deviation.
+pub fn mean_and_std_dev(values: &[f32]) -> (f64, f64) {
+    let n = values.len() as f64;
+    let mean = values.iter().map(|&v| f64::from(v)).sum::<f64>() / n;
+    let variance = values
+        .iter()
+        .map(|&v| (f64::from(v) - mean).powi(2))
+        .sum::<f64>()
+        / n;
+    (mean, variance.sqrt())
+}
+
 /// What [`analyse`] finds.
 pub struct Analysis {
     /// The values' mean and standard deviation.
@@ -51,13 +63,7 @@ pub struct Analysis {
 /// periodogram averaged over the `(side / block)²` blocks of `block × block`.
 pub fn analyse(values: &[f32], side: usize, step: f64, block: usize, bins: usize) -> Analysis {
     let n = values.len() as f64;
-    let mean = values.iter().map(|&v| f64::from(v)).sum::<f64>() / n;
-    let variance = values
-        .iter()
-        .map(|&v| (f64::from(v) - mean).powi(2))
-        .sum::<f64>()
-        / n;
-    let std_dev = variance.sqrt();
+    let (mean, std_dev) = mean_and_std_dev(values);
     // Bartlett: the mean of the blocks' periodograms, each block's mean removed.
     let mut periodogram = vec![0.0; block * block];
     let blocks = side / block;

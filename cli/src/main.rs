@@ -170,15 +170,9 @@ fn pair(m: &ArgMatches, name: &str) -> Result<Option<[f64; 2]>, String> {
     let Some(s) = m.get_one::<String>(name) else {
         return Ok(None);
     };
-    let parts: Vec<f64> = s
-        .split(',')
-        .map(|p| p.trim().parse::<f64>())
-        .collect::<Result<_, _>>()
-        .map_err(|_| format!("--{name}: \"{s}\" is not two numbers X,Y"))?;
-    match parts[..] {
-        [a, b] if a.is_finite() && b.is_finite() => Ok(Some([a, b])),
-        _ => Err(format!("--{name}: \"{s}\" is not two numbers X,Y")),
-    }
+    two_numbers(s)
+        .map(Some)
+        .ok_or_else(|| format!("--{name}: \"{s}\" is not two numbers X,Y"))
 }
 
 /// Where and how densely to sample.
@@ -301,38 +295,36 @@ fn progress(done: f64) {
     let _ = err.flush();
 }
 
+/// Mean ± 3σ (± 1 for a constant image).
+fn three_sigma(mean: f64, sd: f64) -> (f64, f64) {
+    if sd > 0.0 {
+        (mean - 3.0 * sd, mean + 3.0 * sd)
+    } else {
+        (mean - 1.0, mean + 1.0)
+    }
+}
+
+/// Two comma-separated finite numbers.
+fn two_numbers(text: &str) -> Option<[f64; 2]> {
+    let (a, b) = text.split_once(',')?;
+    let (a, b) = (a.trim().parse::<f64>().ok()?, b.trim().parse::<f64>().ok()?);
+    (a.is_finite() && b.is_finite()).then_some([a, b])
+}
+
 /// `[low, high]` for the image: mean ± 3σ, ± the bound, or given.
 fn range(text: &str, values: &[f32], bound: f32) -> Result<(f64, f64), String> {
     match text {
         "auto" => {
-            let n = values.len() as f64;
-            let mean = values.iter().map(|&v| f64::from(v)).sum::<f64>() / n;
-            let sd = (values
-                .iter()
-                .map(|&v| (f64::from(v) - mean).powi(2))
-                .sum::<f64>()
-                / n)
-                .sqrt();
-            Ok(if sd > 0.0 {
-                (mean - 3.0 * sd, mean + 3.0 * sd)
-            } else {
-                (mean - 1.0, mean + 1.0)
-            })
+            let (mean, sd) = analysis::mean_and_std_dev(values);
+            Ok(three_sigma(mean, sd))
         }
         "bound" => Ok((-f64::from(bound), f64::from(bound))),
-        _ => {
-            let parts: Vec<f64> = text
-                .split(',')
-                .map(|p| p.trim().parse::<f64>())
-                .collect::<Result<_, _>>()
-                .map_err(|_| format!("--range: \"{text}\" is not auto, bound or MIN,MAX"))?;
-            match parts[..] {
-                [a, b] if a.is_finite() && b.is_finite() && a < b => Ok((a, b)),
-                _ => Err(format!(
-                    "--range: \"{text}\" is not auto, bound or MIN,MAX with MIN < MAX"
-                )),
-            }
-        }
+        _ => match two_numbers(text) {
+            Some([a, b]) if a < b => Ok((a, b)),
+            _ => Err(format!(
+                "--range: \"{text}\" is not auto, bound or MIN,MAX with MIN < MAX"
+            )),
+        },
     }
 }
 
@@ -397,7 +389,7 @@ fn analyse(m: &ArgMatches, spec: &Spec) -> Result<(), String> {
     );
     std::fs::create_dir_all(&dir).map_err(|e| format!("{}: {e}", dir.display()))?;
     let a = analysis::analyse(&values, f.size, f.step, block, 64);
-    let r = range("auto", &values, 0.0)?;
+    let r = three_sigma(a.mean, a.std_dev);
     image::write_png16(
         &dir.join("image.png"),
         f.size,
