@@ -1360,7 +1360,8 @@ impl core::error::Error for ParseError {}
 /// What the base name position accepts.
 const EXPECTED_BASE: &str = "a noise name (perlin, original, value, cnoise, mnoise, mnoise4093, \
      wavelet, multiband, sparse, wiener, gabor, simplex, cellular, white, value-cubic, \
-     opensimplex2, opensimplex2s)";
+     opensimplex2, opensimplex2s, flow, windy, wrinkled, marble, marble-olano, wood, wood-olano, \
+     polka-dots)";
 const EXPECTED_SETTING: &str = "a setting (seed=, period=, tiling=, first=, bands=, \
      distribution=, density=, count=, kernel=, weights=, covariance=, frequency=, bandwidth=, \
      direction=, orientation=, envelope=, magnitude=, output=, metric=, jitter=, improve=, \

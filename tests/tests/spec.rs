@@ -374,6 +374,17 @@ fn text_round_trips() {
     // Settings in any order, extra spaces, defaults filled in.
     let e: ParseError = "  fbm perlin".parse::<Spec>().unwrap_err();
     assert_eq!(e.position(), 2, "'fbm' is not a noise name");
+    // The message lists every name the parser takes.
+    for base in Base::ALL {
+        assert!(
+            e.expected().contains(&format!(" {},", base.name()))
+                || e.expected().contains(&format!(" {})", base.name()))
+                || e.expected().contains(&format!("({},", base.name())),
+            "{} missing from {:?}",
+            base.name(),
+            e.expected()
+        );
+    }
     let b: Spec = "perlin  gain=0.25 fbm   seed=3 ".parse().expect("valid");
     assert_eq!(
         b,
