@@ -342,7 +342,7 @@ pub type Parts = u8;
 /// Checksums for every noise in one number type, in a fixed order (see [`names`]), of the
 /// parts in `PARTS` (the others' slots are left as they are).
 fn all<R: Bits, const PARTS: Parts>(out: &mut [u32]) {
-    let (described, others) = out.split_at_mut(BASE_CHECKS + COMPOSED);
+    let (described, others) = out.split_at_mut(DESCRIBED);
     if PARTS & DESCRIPTIONS != 0 {
         descriptions::<R>(described);
     }
@@ -350,6 +350,28 @@ fn all<R: Bits, const PARTS: Parts>(out: &mut [u32]) {
         not_described::<R>(others);
     }
 }
+
+/// How many checksums sample a runtime description (the first of each number type's half):
+/// every base in each of its dimensions, then the composed descriptions.
+pub const DESCRIBED: usize = BASE_CHECKS + COMPOSED;
+
+/// Description `i` of the checksums (`i < DESCRIBED`): the spec, its dimensions and the
+/// range of the points, `(-range, range)^dims`. For callers that rebuild the checksums from
+/// the spec's text (the C library's example).
+pub fn described(i: usize) -> Option<(Spec, usize, i32)> {
+    if i < BASE_CHECKS {
+        let (base, dims) = bases_and_dims().nth(i)?;
+        Some((Spec::new(base, seed(base)), dims, BASE_RANGE))
+    } else if i < DESCRIBED {
+        let (_, spec, dims, range) = composed_entry(i - BASE_CHECKS);
+        Some((spec, dims, range))
+    } else {
+        None
+    }
+}
+
+/// The range of the base noises' checksum points.
+const BASE_RANGE: i32 = 200;
 
 /// The checksums of the runtime description in one number type.
 fn descriptions<R: Bits>(out: &mut [u32]) {
@@ -362,7 +384,11 @@ fn descriptions<R: Bits>(out: &mut [u32]) {
     };
     // Every base in each of its dimensions: a noise added to `Base` is checked here unasked.
     for (base, dims) in bases_and_dims() {
-        push(spec_checksum::<R>(&Spec::new(base, seed(base)), dims, 200));
+        push(spec_checksum::<R>(
+            &Spec::new(base, seed(base)),
+            dims,
+            BASE_RANGE,
+        ));
     }
     for i in 0..COMPOSED {
         let (_, spec, dims, range) = composed_entry(i);
