@@ -43,7 +43,10 @@
 //! `std` (default): a host library; any panic becomes `BN_ERROR_INTERNAL`. Without it the
 //! library is `no_std` for firmware (`thumbv6m-none-eabi` and the like). `small-tiles`: the
 //! wavelet noises use the quantized tiles (72 KiB of coefficients in flash instead of 144 KiB;
-//! slightly different values, those of the crate's `I16Tiles`). `prove-no-panic` (firmware):
+//! slightly different values, those of the crate's `I16Tiles`). `dim1` … `dim4` (default: all):
+//! the dimensions a noise can be built for; firmware that needs fewer links less code (each
+//! dimension's noises are a separate compilation of every noise), and `bn_noise_init` refuses
+//! the others with `BN_ERROR_DIMENSION`. `prove-no-panic` (firmware):
 //! the panic handler calls a function that does not exist, so a program in which any panic is
 //! reachable fails to link.
 #![cfg_attr(not(feature = "std"), no_std)]
@@ -116,12 +119,19 @@ pub struct bn_error {
     pub message: [c_char; BN_MESSAGE_BYTES],
 }
 
-/// A noise built for 1 to 4 dimensions.
+#[cfg(not(any(feature = "dim1", feature = "dim2", feature = "dim3", feature = "dim4")))]
+compile_error!("bandnoise-capi needs at least one of the features dim1, dim2, dim3, dim4");
+
+/// A noise built for 1 to 4 dimensions (those the features `dim1` … `dim4` keep).
 #[derive(Clone, Debug)]
 enum Built {
+    #[cfg(feature = "dim1")]
     D1(SpecNoise<1, Tiles>),
+    #[cfg(feature = "dim2")]
     D2(SpecNoise<2, Tiles>),
+    #[cfg(feature = "dim3")]
     D3(SpecNoise<3, Tiles>),
+    #[cfg(feature = "dim4")]
     D4(SpecNoise<4, Tiles>),
 }
 
@@ -276,10 +286,23 @@ pub unsafe extern "C" fn bn_noise_init(
             Err(e) => return unsafe { report(error, BN_ERROR_TEXT, e.position(), &e) },
         };
         let built = match dims {
+            #[cfg(feature = "dim1")]
             1 => spec.build_with::<1, Tiles>().map(Built::D1),
+            #[cfg(feature = "dim2")]
             2 => spec.build_with::<2, Tiles>().map(Built::D2),
+            #[cfg(feature = "dim3")]
             3 => spec.build_with::<3, Tiles>().map(Built::D3),
+            #[cfg(feature = "dim4")]
             4 => spec.build_with::<4, Tiles>().map(Built::D4),
+            #[allow(
+                unreachable_patterns,
+                reason = "reached when a dimension's feature is off"
+            )]
+            1..=4 => {
+                let what = format_args!("this library was built without {dims}D noise");
+                // SAFETY: the caller's contract.
+                return unsafe { report(error, BN_ERROR_DIMENSION, 0, &what) };
+            }
             _ => {
                 let what = format_args!("the dimension must be 1 to 4, not {dims}");
                 // SAFETY: the caller's contract.
@@ -322,9 +345,13 @@ fn dimension_or_text(e: Error) -> bn_status {
 pub unsafe extern "C" fn bn_noise_dims(noise: *const bn_noise) -> u32 {
     // SAFETY: the caller's contract.
     match unsafe { built(noise) } {
+        #[cfg(feature = "dim1")]
         Ok(Built::D1(_)) => 1,
+        #[cfg(feature = "dim2")]
         Ok(Built::D2(_)) => 2,
+        #[cfg(feature = "dim3")]
         Ok(Built::D3(_)) => 3,
+        #[cfg(feature = "dim4")]
         Ok(Built::D4(_)) => 4,
         Err(_) => 0,
     }
@@ -361,9 +388,13 @@ pub unsafe extern "C" fn bn_noise_text(
         // SAFETY: `text` points to `len > 0` writable bytes.
         let out = unsafe { core::slice::from_raw_parts_mut(text, len) };
         let spec = match built {
+            #[cfg(feature = "dim1")]
             Built::D1(n) => n.spec(),
+            #[cfg(feature = "dim2")]
             Built::D2(n) => n.spec(),
+            #[cfg(feature = "dim3")]
             Built::D3(n) => n.spec(),
+            #[cfg(feature = "dim4")]
             Built::D4(n) => n.spec(),
         };
         let mut w = Cut { out, len: 0 };
@@ -405,17 +436,17 @@ impl Write for Cut<'_> {
 /// `Self` and `R` have the same size, alignment and valid bit patterns.
 unsafe trait CReal: Copy {
     type R: Real;
-    fn from_c(self) -> Self::R;
-    fn to_c(r: Self::R) -> Self;
+    fn to_real(self) -> Self::R;
+    fn from_real(r: Self::R) -> Self;
 }
 
 // SAFETY: the same type.
 unsafe impl CReal for f32 {
     type R = f32;
-    fn from_c(self) -> f32 {
+    fn to_real(self) -> f32 {
         self
     }
-    fn to_c(r: f32) -> f32 {
+    fn from_real(r: f32) -> f32 {
         r
     }
 }
@@ -425,10 +456,10 @@ unsafe impl CReal for f32 {
 // layout), and every `i32` is one.
 unsafe impl CReal for i32 {
     type R = I16F16;
-    fn from_c(self) -> I16F16 {
+    fn to_real(self) -> I16F16 {
         I16F16::from_bits(self)
     }
-    fn to_c(r: I16F16) -> i32 {
+    fn from_real(r: I16F16) -> i32 {
         r.to_bits()
     }
 }
@@ -440,7 +471,7 @@ unsafe impl CReal for i32 {
 /// `p` points to `D` readable values.
 unsafe fn read<C: CReal, const D: usize>(p: *const C) -> [C::R; D] {
     // SAFETY: the caller's contract: `p.add(a)` for `a < D` is in the array.
-    core::array::from_fn(|a| unsafe { p.add(a).read() }.from_c())
+    core::array::from_fn(|a| unsafe { p.add(a).read() }.to_real())
 }
 
 /// One operation on the built noise, generic over its dimension.
@@ -470,9 +501,13 @@ where
         // SAFETY: the caller's contract, passed on.
         unsafe {
             match built(noise) {
+                #[cfg(feature = "dim1")]
                 Ok(Built::D1(n)) => op.run::<1, _>(n),
+                #[cfg(feature = "dim2")]
                 Ok(Built::D2(n)) => op.run::<2, _>(n),
+                #[cfg(feature = "dim3")]
                 Ok(Built::D3(n)) => op.run::<3, _>(n),
+                #[cfg(feature = "dim4")]
                 Ok(Built::D4(n)) => op.run::<4, _>(n),
                 Err(status) => status,
             }
@@ -492,7 +527,7 @@ impl<C: CReal> Op<C> for Sample<C> {
             return BN_ERROR_NULL;
         }
         // SAFETY: `point` holds `D` values, `value` is writable (the public contract).
-        unsafe { self.value.write(C::to_c(n.sample(read(self.point)))) };
+        unsafe { self.value.write(C::from_real(n.sample(read(self.point)))) };
         BN_OK
     }
 }
@@ -513,9 +548,9 @@ impl<C: CReal> Op<C> for Gradient<C> {
         let (v, g) = n.sample_with_gradient(unsafe { read(self.point) });
         // SAFETY: `value` is writable, `gradient` has room for `D` values.
         unsafe {
-            self.value.write(C::to_c(v));
+            self.value.write(C::from_real(v));
             for (a, &d) in g.iter().enumerate() {
-                self.gradient.add(a).write(C::to_c(d));
+                self.gradient.add(a).write(C::from_real(d));
             }
         }
         BN_OK
