@@ -186,10 +186,12 @@ unsafe fn built<'a>(noise: *const bn_noise) -> Result<&'a Built, bn_status> {
     Ok(unsafe { &(*noise.cast::<Stored>()).built })
 }
 
-/// Writes a message into `bn_error::message`, cut at a character boundary, NUL-terminated.
+/// Writes a message into `bn_error::message`: the longest prefix that fits with its NUL, cut
+/// at a character boundary.
 struct Message<'a> {
     out: &'a mut [c_char; BN_MESSAGE_BYTES],
     len: usize,
+    full: bool,
 }
 
 impl Write for Message<'_> {
@@ -197,16 +199,19 @@ impl Write for Message<'_> {
         for c in s.chars() {
             let mut utf8 = [0u8; 4];
             let bytes = c.encode_utf8(&mut utf8).as_bytes();
-            let Some(slots) = self.out.get_mut(self.len..self.len + bytes.len()) else {
-                return Ok(());
+            let end = self.len + bytes.len();
+            // The last byte is the NUL's; after one character did not fit, none is written.
+            let slots = match self.out.get_mut(self.len..end) {
+                Some(slots) if !self.full && end < BN_MESSAGE_BYTES => slots,
+                _ => {
+                    self.full = true;
+                    return Ok(());
+                }
             };
-            if self.len + bytes.len() >= BN_MESSAGE_BYTES {
-                return Ok(()); // the NUL's byte
-            }
             for (slot, &b) in slots.iter_mut().zip(bytes) {
                 *slot = b as c_char;
             }
-            self.len += bytes.len();
+            self.len = end;
         }
         Ok(())
     }
@@ -231,6 +236,7 @@ unsafe fn report(
         let mut m = Message {
             out: &mut error.message,
             len: 0,
+            full: false,
         };
         // `Message` never fails; a failing `Display` leaves what it wrote.
         let _ = write!(m, "{what}");
@@ -765,4 +771,26 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
     }
     // SAFETY: never linked: a program that reaches this fails to link.
     unsafe { bandnoise_c_has_a_reachable_panic() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_long_message_is_its_longest_prefix_that_fits() {
+        let mut out = [0 as c_char; BN_MESSAGE_BYTES];
+        let mut m = Message {
+            out: &mut out,
+            len: 0,
+            full: false,
+        };
+        // 509 ASCII bytes and "é" (2 bytes) fill bytes 0..511, leaving the last for the NUL;
+        // "€" (3 bytes) does not fit, and the "x" after it, which would, is not written.
+        let text = format!("{}é€x", "a".repeat(509));
+        write!(m, "{text}").expect("never fails");
+        assert_eq!(m.len, 511);
+        let written: Vec<u8> = out[..511].iter().map(|&c| c as u8).collect();
+        assert_eq!(written, format!("{}é", "a".repeat(509)).into_bytes());
+    }
 }

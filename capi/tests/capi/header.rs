@@ -22,6 +22,6 @@ fn the_committed_header_is_generated_from_the_code() {
     assert!(
         committed == generated,
         "capi/include/bandnoise.h is not what cbindgen generates from capi/src/lib.rs; \
-         regenerate it with BLESS=1 cargo test -p bandnoise-capi --test header"
+         regenerate it with BLESS=1 cargo test -p bandnoise-capi --test capi header"
     );
 }
