@@ -13,7 +13,7 @@ rustup toolchain install # installs the pinned channel, components and targets; 
 step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
-cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench --target wasm32-unknown-unknown --all-targets -- -D warnings
+cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench -p bandnoise-js --target wasm32-unknown-unknown --all-targets -- -D warnings
 
 step "unit, integration and doc tests"
 cargo test --workspace
@@ -39,7 +39,7 @@ cargo bench -p bandnoise-bench --bench impulse -- --test
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
 
-step "browser: Chromium, wasm build, wasm-bindgen tests, end-to-end test"
+step "browser: Chromium, wasm build, wasm-bindgen tests, end-to-end test, npm package"
 if ! command -v chromium >/dev/null || ! command -v chromedriver >/dev/null; then
     apt-get update
     apt-get install -y chromium chromium-driver
@@ -54,6 +54,8 @@ if [ "$size" -gt 190000 ]; then
 fi
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
 node tests/e2e/demo.test.mjs
+# The npm package: packed, installed into an empty folder, used from Node, TypeScript and Chromium.
+bash scripts/npm.sh
 
 step "firmware under QEMU: the host's checksums on Cortex-M0, Cortex-M4F and RV32IMC"
 if ! command -v qemu-system-arm >/dev/null || ! command -v qemu-system-riscv32 >/dev/null; then

@@ -1,0 +1,297 @@
+//! The npm package's wasm module (`bandnoise` on npm): any noise of the crate, named by its
+//! runtime description ([`bandnoise::spec`], its text form), built in 1–4D and sampled from
+//! JavaScript point by point, with gradients, or over a grid into the caller's `Float32Array`.
+//!
+//! This crate only crosses the boundary: it parses and builds the description with
+//! [`Spec`] and samples the [`SpecNoise`] it builds, so a JavaScript value is the crate's value
+//! bit for bit (the package's tests compare the crate's checksums). Every bad input is a
+//! JavaScript `Error` with the crate's message, never a panic. `js/index.js` wraps the exported
+//! class in the package's API (a class per noise, `fromSpec`, `fillGrid`'s checks); its
+//! documentation is `js/README.md`.
+//!
+//! Wavelet and multiband noise use the quantized tiles ([`I16Tiles`], 72 KiB instead of 144 KiB
+//! of `f32`): the module is downloaded by every page that uses it. Their values differ from the
+//! `f32` tiles' by the quantization (below 2⁻¹² of the noise's range), and equal those of the C
+//! library's firmware builds and of `bandnoise-checks`.
+
+use bandnoise::batch::Grid;
+use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
+use bandnoise::{Noise, NoiseGradient};
+use js_sys::Float32Array;
+use wasm_bindgen::prelude::*;
+
+/// A built noise of one dimension.
+#[derive(Clone, Debug)]
+enum Built {
+    D1(SpecNoise<1, I16Tiles>),
+    D2(SpecNoise<2, I16Tiles>),
+    D3(SpecNoise<3, I16Tiles>),
+    D4(SpecNoise<4, I16Tiles>),
+}
+
+/// The values a grid's rows are computed into before they are copied to the caller's array:
+/// at most this many `f32`s (64 KiB), or one row when a row is longer.
+const CHUNK: usize = 16 * 1024;
+
+/// A noise built from its description in 1 to 4 dimensions (`js/index.js` wraps it as the
+/// package's `Noise`).
+#[wasm_bindgen]
+#[derive(Debug)]
+pub struct RawNoise {
+    spec: Spec,
+    built: Built,
+    /// Rows of a grid on their way to the caller's array (kept between calls).
+    scratch: Vec<f32>,
+}
+
+fn error(message: impl core::fmt::Display) -> JsError {
+    JsError::new(&message.to_string())
+}
+
+#[wasm_bindgen]
+impl RawNoise {
+    /// Parses `text` and builds it in `dims` dimensions.
+    ///
+    /// # Errors
+    ///
+    /// The parser's message (the byte position and what was expected there), a dimension
+    /// outside 1..=4, or the build's refusal (a noise without that dimension).
+    #[wasm_bindgen(constructor)]
+    pub fn new(text: &str, dims: u32) -> Result<RawNoise, JsError> {
+        let spec: Spec = text
+            .parse()
+            .map_err(|e| error(format_args!("bad noise description \"{text}\": {e}")))?;
+        let built = match dims {
+            1 => spec.build_with::<1, I16Tiles>().map(Built::D1),
+            2 => spec.build_with::<2, I16Tiles>().map(Built::D2),
+            3 => spec.build_with::<3, I16Tiles>().map(Built::D3),
+            4 => spec.build_with::<4, I16Tiles>().map(Built::D4),
+            _ => return Err(error(format_args!("dims must be 1, 2, 3 or 4, not {dims}"))),
+        }
+        .map_err(|e| error(format_args!("\"{text}\" in {dims}D: {e}")))?;
+        Ok(RawNoise {
+            spec,
+            built,
+            scratch: Vec::new(),
+        })
+    }
+
+    /// The number of dimensions it was built in.
+    #[wasm_bindgen(getter)]
+    pub fn dims(&self) -> u32 {
+        match self.built {
+            Built::D1(_) => 1,
+            Built::D2(_) => 2,
+            Built::D3(_) => 3,
+            Built::D4(_) => 4,
+        }
+    }
+
+    /// The description in full: every setting written out, defaults included, so that it
+    /// keeps its meaning if a default changes (parsing it gives the same noise).
+    #[wasm_bindgen(getter)]
+    pub fn text(&self) -> String {
+        self.spec.to_string()
+    }
+
+    /// The value at `x` of a 1D noise (`NaN` for another dimension: the wrapper calls the
+    /// method of the noise's dimension).
+    pub fn sample1(&self, x: f32) -> f32 {
+        match &self.built {
+            Built::D1(n) => n.sample([x]),
+            _ => f32::NAN,
+        }
+    }
+
+    /// The value at `(x, y)` of a 2D noise (`NaN` for another dimension).
+    pub fn sample2(&self, x: f32, y: f32) -> f32 {
+        match &self.built {
+            Built::D2(n) => n.sample([x, y]),
+            _ => f32::NAN,
+        }
+    }
+
+    /// The value at `(x, y, z)` of a 3D noise (`NaN` for another dimension).
+    pub fn sample3(&self, x: f32, y: f32, z: f32) -> f32 {
+        match &self.built {
+            Built::D3(n) => n.sample([x, y, z]),
+            _ => f32::NAN,
+        }
+    }
+
+    /// The value at `(x, y, z, w)` of a 4D noise (`NaN` for another dimension).
+    pub fn sample4(&self, x: f32, y: f32, z: f32, w: f32) -> f32 {
+        match &self.built {
+            Built::D4(n) => n.sample([x, y, z, w]),
+            _ => f32::NAN,
+        }
+    }
+
+    /// The value and gradient at the first `dims` coordinates of `p`: `[value, ∂x, ∂y, …]`.
+    ///
+    /// # Errors
+    ///
+    /// Fewer than `dims` coordinates.
+    pub fn gradient(&self, p: &[f32]) -> Result<Vec<f32>, JsError> {
+        fn one<const D: usize>(n: &SpecNoise<D, I16Tiles>, p: &[f32]) -> Vec<f32>
+        where
+            SpecNoise<D, I16Tiles>: NoiseGradient<f32, D>,
+        {
+            let (v, g) = n.sample_with_gradient(core::array::from_fn(|a| p[a]));
+            core::iter::once(v).chain(g).collect()
+        }
+        let dims = self.dims() as usize;
+        if p.len() < dims {
+            return Err(error(format_args!(
+                "a {dims}D noise's gradient needs {dims} coordinates, not {}",
+                p.len()
+            )));
+        }
+        Ok(match &self.built {
+            Built::D1(n) => one(n, p),
+            Built::D2(n) => one(n, p),
+            Built::D3(n) => one(n, p),
+            Built::D4(n) => one(n, p),
+        })
+    }
+
+    /// Fills `out` with the grid's values, axis 0 fastest: point `(i, j, …)` is
+    /// `origin + (i·step₀, j·step₁, …)`, its value at index `i + size₀·(j + size₁·…)`, equal bit
+    /// for bit to the point's sample. The values are computed by the crate's batch kernels row
+    /// by row into a bounded buffer of this module and copied into `out` (never `out` into the
+    /// module: no memory grows with the grid).
+    ///
+    /// # Errors
+    ///
+    /// Lengths of `origin`, `step` or `size` other than `dims`, a size that is not a
+    /// whole number in `0..=2³²`, or an `out` whose length is not the grid's point count.
+    pub fn fill_grid(
+        &mut self,
+        out: &Float32Array,
+        origin: &[f32],
+        step: &[f32],
+        size: &[f64],
+    ) -> Result<(), JsError> {
+        let dims = self.dims() as usize;
+        for (name, len) in [
+            ("origin", origin.len()),
+            ("step", step.len()),
+            ("size", size.len()),
+        ] {
+            if len != dims {
+                return Err(error(format_args!(
+                    "a {dims}D grid's {name} has {dims} numbers, not {len}"
+                )));
+            }
+        }
+        let mut sizes = [0usize; 4];
+        for (s, &v) in sizes.iter_mut().zip(size) {
+            if !(v.fract() == 0.0 && (0.0..=4_294_967_296.0).contains(&v)) {
+                return Err(error(format_args!(
+                    "a grid's size is a whole number of points from 0 to 2^32, not {v}"
+                )));
+            }
+            *s = v as usize;
+        }
+        let len = sizes[..dims]
+            .iter()
+            .try_fold(1usize, |n, &s| n.checked_mul(s))
+            .filter(|&n| n <= u32::MAX as usize);
+        let Some(len) = len.filter(|&n| n == out.length() as usize) else {
+            return Err(error(format_args!(
+                "the array for a {} grid has {} values, not {}",
+                sizes[..dims]
+                    .iter()
+                    .map(|s| s.to_string())
+                    .collect::<Vec<_>>()
+                    .join("×"),
+                len.map_or_else(|| "more than 2^32".to_string(), |n| n.to_string()),
+                out.length()
+            )));
+        };
+        if len == 0 {
+            return Ok(());
+        }
+        let scratch = &mut self.scratch;
+        match &self.built {
+            Built::D1(n) => fill(n, scratch, out, origin, step, &sizes),
+            Built::D2(n) => fill(n, scratch, out, origin, step, &sizes),
+            Built::D3(n) => fill(n, scratch, out, origin, step, &sizes),
+            Built::D4(n) => fill(n, scratch, out, origin, step, &sizes),
+        }
+    }
+}
+
+/// [`RawNoise::fill_grid`] for a checked, non-empty grid: each row (the points along axis 0)
+/// is a grid of its own whose origin is the full grid's point, so its values are the full
+/// grid's bit for bit; rows gather in `scratch` up to [`CHUNK`] values per copy to `out`.
+fn fill<const D: usize>(
+    noise: &SpecNoise<D, I16Tiles>,
+    scratch: &mut Vec<f32>,
+    out: &Float32Array,
+    origin: &[f32],
+    step: &[f32],
+    sizes: &[usize; 4],
+) -> Result<(), JsError>
+where
+    SpecNoise<D, I16Tiles>: Noise<f32, D>,
+{
+    let grid = Grid::new(
+        core::array::from_fn(|a| origin[a]),
+        core::array::from_fn(|a| step[a]),
+        core::array::from_fn(|a| sizes[a]),
+    );
+    let row = grid.size[0];
+    let rows = grid.len() / row;
+    let per_copy = (CHUNK / row).max(1);
+    scratch.resize(per_copy * row, 0.0);
+    let mut index = [0usize; D];
+    let mut r = 0;
+    while r < rows {
+        let count = per_copy.min(rows - r);
+        for chunk in scratch[..count * row].chunks_exact_mut(row) {
+            let mut start = grid.point(index);
+            start[0] = grid.origin[0];
+            let mut size = [1usize; D];
+            size[0] = row;
+            noise
+                .fill_grid(&Grid::new(start, grid.step, size), chunk)
+                .map_err(error)?;
+            // The next row: axis 1 fastest.
+            for (i, &s) in index.iter_mut().zip(&grid.size).skip(1) {
+                *i += 1;
+                if *i < s {
+                    break;
+                }
+                *i = 0;
+            }
+        }
+        let at = (r * row) as u32;
+        out.subarray(at, at + (count * row) as u32)
+            .copy_from(&scratch[..count * row]);
+        r += count;
+    }
+    Ok(())
+}
+
+/// The names of every noise, separated by spaces, in the crate's order ([`Base::ALL`]): the
+/// package has a class for each.
+#[wasm_bindgen]
+pub fn bases() -> String {
+    Base::ALL.map(Base::name).join(" ")
+}
+
+/// The dimensions a noise has a form in, as a bit mask (bit `d - 1` for `d`D), or 0 for an
+/// unknown name.
+#[wasm_bindgen(js_name = dimensionMask)]
+pub fn dimension_mask(name: &str) -> u32 {
+    Base::ALL
+        .into_iter()
+        .find(|b| b.name() == name)
+        .map_or(0, |b| {
+            (1..=4u32)
+                .filter(|&d| b.has_dimension(d as usize))
+                .map(|d| 1 << (d - 1))
+                .sum()
+        })
+}
