@@ -29,12 +29,11 @@ done
 cargo build -p bandnoise --release --target thumbv6m-none-eabi --features serde
 
 step "benchmarks compile and run once"
-cargo bench -p bandnoise-tests --bench lattice -- --test
-cargo bench -p bandnoise-tests --bench wavelet -- --test
+# `cargo test` runs criterion's benchmarks once each (test mode) in the test profile, whose
+# dependencies the step above built: no second, bench-profile build of everything.
+cargo test -p bandnoise-tests --bench lattice --bench wavelet
 # Against the peer crates (each workload once; the measured run is scripts/bench-peers.sh).
-cargo bench -p bandnoise-bench --bench peers -- --test
-cargo bench -p bandnoise-bench --bench spec -- --test
-cargo bench -p bandnoise-bench --bench impulse -- --test
+cargo test -p bandnoise-bench --bench peers --bench spec --bench impulse
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
