@@ -4,7 +4,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-step() { printf '\n==> %s\n' "$*"; }
+# Each step prints the minutes and seconds since the start (CI's time budget).
+step() { printf '\n==> [%d:%02d] %s\n' $((SECONDS / 60)) $((SECONDS % 60)) "$*"; }
 
 step "toolchain (rust-toolchain.toml)"
 rustup set auto-self-update disable
@@ -139,4 +140,4 @@ step "C library: header, examples on the host, Cortex-M0 and Cortex-M4F (QEMU), 
 bash scripts/capi.sh
 
 echo
-echo "all bandnoise tests passed"
+echo "all bandnoise tests passed in $((SECONDS / 60)) min $((SECONDS % 60)) s"

@@ -93,7 +93,8 @@ extern "C" {
 
 /**
  * Builds the noise described by `text` (the runtime description's text form, e.g.
- * `"perlin seed=7 fbm octaves=5"`; see the README) for `dims` dimensions into `noise`.
+ * `"perlin seed=7 fbm octaves=5"`; its grammar and settings are in capi/README.md and the
+ * Rust crate's `bandnoise::spec` documentation) for `dims` dimensions into `noise`.
  *
  * Returns `BN_OK`, or `BN_ERROR_TEXT` (bad text or a value out of range),
  * `BN_ERROR_DIMENSION` (the noise has no `dims`-dimensional form, `dims` not 1–4), or

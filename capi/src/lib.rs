@@ -186,23 +186,43 @@ unsafe fn built<'a>(noise: *const bn_noise) -> Result<&'a Built, bn_status> {
     Ok(unsafe { &(*noise.cast::<Stored>()).built })
 }
 
-/// Writes a message into `bn_error::message`: the longest prefix that fits with its NUL, cut
-/// at a character boundary.
-struct Message<'a> {
-    out: &'a mut [c_char; BN_MESSAGE_BYTES],
+/// Writes into a C string buffer the longest prefix of what is printed that fits with its NUL,
+/// cut at a character boundary: after one character did not fit, none after it is written.
+/// [`Prefix::finish`] writes the NUL and says whether everything fitted.
+struct Prefix<'a> {
+    out: &'a mut [c_char],
     len: usize,
     full: bool,
 }
 
-impl Write for Message<'_> {
+impl<'a> Prefix<'a> {
+    fn new(out: &'a mut [c_char]) -> Self {
+        Self {
+            out,
+            len: 0,
+            full: false,
+        }
+    }
+
+    /// Ends the string with its NUL (an empty buffer gets none); `true` if nothing was cut.
+    fn finish(self) -> bool {
+        if let Some(nul) = self.out.get_mut(self.len) {
+            *nul = 0;
+        }
+        !self.full
+    }
+}
+
+impl Write for Prefix<'_> {
     fn write_str(&mut self, s: &str) -> fmt::Result {
         for c in s.chars() {
             let mut utf8 = [0u8; 4];
             let bytes = c.encode_utf8(&mut utf8).as_bytes();
             let end = self.len + bytes.len();
-            // The last byte is the NUL's; after one character did not fit, none is written.
+            // The last byte is the NUL's.
+            let room = self.out.len();
             let slots = match self.out.get_mut(self.len..end) {
-                Some(slots) if !self.full && end < BN_MESSAGE_BYTES => slots,
+                Some(slots) if !self.full && end < room => slots,
                 _ => {
                     self.full = true;
                     return Ok(());
@@ -232,24 +252,18 @@ unsafe fn report(
     if let Some(error) = unsafe { error.as_mut() } {
         error.status = status;
         error.position = u32::try_from(position).unwrap_or(u32::MAX);
-        error.message[0] = 0;
-        let mut m = Message {
-            out: &mut error.message,
-            len: 0,
-            full: false,
-        };
-        // `Message` never fails; a failing `Display` leaves what it wrote.
+        let mut m = Prefix::new(&mut error.message);
+        // `Prefix` never fails; a failing `Display` leaves what it wrote. A message too long
+        // for the buffer is its longest prefix.
         let _ = write!(m, "{what}");
-        let end = m.len;
-        if let Some(nul) = error.message.get_mut(end) {
-            *nul = 0;
-        }
+        m.finish();
     }
     status
 }
 
 /// Builds the noise described by `text` (the runtime description's text form, e.g.
-/// `"perlin seed=7 fbm octaves=5"`; see the README) for `dims` dimensions into `noise`.
+/// `"perlin seed=7 fbm octaves=5"`; its grammar and settings are in capi/README.md and the
+/// Rust crate's `bandnoise::spec` documentation) for `dims` dimensions into `noise`.
 ///
 /// Returns `BN_OK`, or `BN_ERROR_TEXT` (bad text or a value out of range),
 /// `BN_ERROR_DIMENSION` (the noise has no `dims`-dimensional form, `dims` not 1–4), or
@@ -403,35 +417,10 @@ pub unsafe extern "C" fn bn_noise_text(
             #[cfg(feature = "dim4")]
             Built::D4(n) => n.spec(),
         };
-        let mut w = Cut { out, len: 0 };
-        let fits = write!(w, "{spec}").is_ok();
-        let end = w.len.min(len - 1);
-        if let Some(nul) = w.out.get_mut(end) {
-            *nul = 0;
-        }
-        if fits { BN_OK } else { BN_ERROR_BUFFER }
+        let mut w = Prefix::new(out);
+        let _ = write!(w, "{spec}");
+        if w.finish() { BN_OK } else { BN_ERROR_BUFFER }
     })
-}
-
-/// Writes into a byte buffer, failing once it is full (its last byte kept for the NUL).
-struct Cut<'a> {
-    out: &'a mut [c_char],
-    len: usize,
-}
-
-impl Write for Cut<'_> {
-    fn write_str(&mut self, s: &str) -> fmt::Result {
-        for &b in s.as_bytes() {
-            if self.len + 1 >= self.out.len() {
-                return Err(fmt::Error);
-            }
-            if let Some(slot) = self.out.get_mut(self.len) {
-                *slot = b as c_char;
-            }
-            self.len += 1;
-        }
-        Ok(())
-    }
 }
 
 /// A number type of the C interface: its C representation and the crate's type, which has
@@ -779,18 +768,34 @@ mod tests {
 
     #[test]
     fn a_long_message_is_its_longest_prefix_that_fits() {
-        let mut out = [0 as c_char; BN_MESSAGE_BYTES];
-        let mut m = Message {
-            out: &mut out,
-            len: 0,
-            full: false,
-        };
+        let mut out = [0x55 as c_char; BN_MESSAGE_BYTES];
+        let mut m = Prefix::new(&mut out);
         // 509 ASCII bytes and "é" (2 bytes) fill bytes 0..511, leaving the last for the NUL;
         // "€" (3 bytes) does not fit, and the "x" after it, which would, is not written.
         let text = format!("{}é€x", "a".repeat(509));
         write!(m, "{text}").expect("never fails");
         assert_eq!(m.len, 511);
+        assert!(!m.finish(), "the text was cut");
+        assert_eq!(out[511], 0);
         let written: Vec<u8> = out[..511].iter().map(|&c| c as u8).collect();
         assert_eq!(written, format!("{}é", "a".repeat(509)).into_bytes());
+    }
+
+    #[test]
+    fn a_prefix_that_fits_ends_with_its_nul() {
+        let mut out = [0x55 as c_char; 6];
+        let mut m = Prefix::new(&mut out);
+        write!(m, "abcde").expect("never fails");
+        assert!(m.finish());
+        assert_eq!(out.map(|c| c as u8), *b"abcde\0");
+        // One byte more does not fit: the NUL keeps the last byte.
+        let mut m = Prefix::new(&mut out);
+        write!(m, "abcdef").expect("never fails");
+        assert!(!m.finish());
+        assert_eq!(out.map(|c| c as u8), *b"abcde\0");
+        // An empty buffer takes nothing, not even the NUL.
+        let mut m = Prefix::new(&mut []);
+        write!(m, "a").expect("never fails");
+        assert!(!m.finish());
     }
 }
