@@ -53,6 +53,9 @@ function params() {
     number('frequency'), number('bandwidth'),
     Math.cos(number('angle') * Math.PI / 180), Math.sin(number('angle') * Math.PI / 180),
     $('orientation').value, $('envelope').value,
+    // Empty texture settings are the texture's defaults (NaN); an empty warp is none.
+    new Float64Array([number('texture1'), number('texture2')]),
+    $('warp').value.trim() === '' ? 0 : number('warp'),
     $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
   );
 }

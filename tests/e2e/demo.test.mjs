@@ -134,6 +134,29 @@ await test('wiener noise: the covariance control changes the image', async () =>
   await set('covariance', 'low-pass');
 });
 
+await test('textures and warp: their settings change the image, bad ones show a message', async () => {
+  await set('kind', 'wood');
+  const plain = (await canvas('noise')).hash;
+  await set('texture1', '5');
+  const rings = await canvas('noise');
+  assert.equal(await message(), '');
+  assert.notEqual(rings.hash, plain, 'the rings setting changes wood');
+  await page.screenshot({ path: `${artifacts}/demo-wood-rings-5.png` });
+  await set('texture1', '');
+  assert.equal((await canvas('noise')).hash, plain, 'empty is the default');
+  await set('kind', 'perlin');
+  const unwarped = (await canvas('noise')).hash;
+  await set('warp', '0.8');
+  const warped = await canvas('noise');
+  assert.equal(await message(), '');
+  assert.ok(warped.variance > 200 && warped.hash !== unwarped, 'a warp changes the image');
+  await page.screenshot({ path: `${artifacts}/demo-perlin-warp.png` });
+  await set('warp', '5000');
+  assert.match(await message(), /warp amplitude 5000 must be finite and within ±1024/);
+  await set('warp', '0');
+  assert.equal(await message(), '');
+});
+
 await test('gabor noise: the spectrum view shows the lobes move with frequency and orientation', async () => {
   await set('kind', 'gabor');
   await set('bandwidth', '0.25');

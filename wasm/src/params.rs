@@ -132,6 +132,24 @@ fn describe(e: Error) -> String {
             num(min.into()),
             num(max.into())
         ),
+        Error::TextureSetting {
+            name,
+            value,
+            min,
+            max,
+        } => format!(
+            "texture {name} {} must be finite and in [{}, {}]",
+            num(value.into()),
+            num(min.into()),
+            num(max.into())
+        ),
+        Error::WarpAmplitude(a) => format!(
+            "warp amplitude {} must be finite and within ±1024",
+            num(a.into())
+        ),
+        Error::WarpedPeriod => {
+            "a warped noise does not repeat: a warp and a period cannot be combined".into()
+        }
         // The page asks the core only for what is refused above (its kinds have a 3D form and
         // its period has 3 axes, so building the spec in 3D is not refused).
         _ => "invalid settings".into(),
@@ -158,7 +176,9 @@ impl Params {
     /// than low-pass or band-pass (used by Wiener noise, ignored by the others); a Gabor
     /// frequency, bandwidth or direction the core refuses, an orientation other than
     /// anisotropic, isotropic or hybrid, an envelope other than hann or truncated (used by
-    /// Gabor noise, ignored by the others);
+    /// Gabor noise, ignored by the others); texture settings (two numbers, `NaN` for the
+    /// texture's default) or a warp amplitude (0: none) the core refuses, or a warp with a
+    /// period;
     /// projection asked for a lattice noise; filtering asked for a lattice noise without a
     /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
     /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
@@ -189,6 +209,8 @@ impl Params {
         direction_y: f64,
         orientation: &str,
         envelope: &str,
+        texture: &[f64],
+        warp: f64,
         projected: bool,
         filtered: bool,
         infinite: bool,
@@ -339,6 +361,19 @@ impl Params {
             // Accepted for Wiener noise (refused only for other bases).
             spec = spec.with_covariance(covariance).unwrap_or(spec);
         }
+        // The textures' two settings (`NaN`: the texture's default), for the textures only.
+        if base.is_texture() && texture.len() == 2 && texture.iter().any(|v| !v.is_nan()) {
+            let current = spec.texture();
+            let mut settings = [0.0f32; 2];
+            for ((s, &v), (&d, name)) in settings.iter_mut().zip(texture).zip(
+                current
+                    .iter()
+                    .zip(["texture setting 1", "texture setting 2"]),
+            ) {
+                *s = if v.is_nan() { d } else { finite(name, v)? };
+            }
+            spec = spec.with_texture(settings).map_err(describe)?;
+        }
         let bands = Bands::new(-3, band_weights).map_err(describe)?;
         if base == Base::Multiband {
             if band_weights.iter().all(|w| *w == 0.0) {
@@ -348,6 +383,10 @@ impl Params {
                 .with_bands(bands)
                 .and_then(|s| s.with_distribution(distribution))
                 .map_err(describe)?;
+        }
+        let warp = finite("warp", warp)?;
+        if warp != 0.0 {
+            spec = spec.with_warp(warp).map_err(describe)?;
         }
         // Filtering a fractal sum filters its octaves: the sum is then taken in `render.rs`.
         let unsummed = spec;

@@ -33,6 +33,8 @@ struct Args<'a> {
     direction: [f64; 2],
     orientation: &'a str,
     envelope: &'a str,
+    texture: [f64; 2],
+    warp: f64,
     projected: bool,
     filtered: bool,
     infinite: bool,
@@ -58,6 +60,8 @@ const ARGS: Args = Args {
     direction: [1.0, 0.0],
     orientation: "anisotropic",
     envelope: "hann",
+    texture: [f64::NAN, f64::NAN],
+    warp: 0.0,
     projected: false,
     filtered: false,
     infinite: false,
@@ -90,6 +94,8 @@ impl Args<'_> {
             self.direction[1],
             self.orientation,
             self.envelope,
+            &self.texture,
+            self.warp,
             self.projected,
             self.filtered,
             self.infinite,
@@ -530,6 +536,71 @@ fn wiener_covariance_changes_the_image() {
     .build()
     .unwrap_err();
     assert!(e.contains("covariance must be"), "{e}");
+}
+
+/// The textures' two settings and the domain warp change the image; empty settings are the
+/// texture's defaults; bad values are refused with the core's reason.
+#[wasm_bindgen_test]
+fn texture_settings_and_warp_change_the_image() {
+    let ctx = canvas();
+    let render = |args: Args| {
+        let mut demo = Demo::new(64).unwrap();
+        demo.render(&args.build().unwrap());
+        demo.draw(&ctx).unwrap();
+        ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
+    };
+    let wood = Args {
+        kind: "wood",
+        zoom: 8.0,
+        ..ARGS
+    };
+    let plain = render(wood);
+    assert!(
+        plain
+            == render(Args {
+                texture: [2.0, 0.3],
+                ..wood
+            }),
+        "the defaults, written out, are the defaults"
+    );
+    let rings = render(Args {
+        texture: [5.0, f64::NAN],
+        ..wood
+    });
+    assert!(plain != rings, "the rings setting changes the image");
+    assert!(
+        render(ARGS)
+            == render(Args {
+                texture: [5.0, 1.0],
+                ..ARGS
+            }),
+        "perlin ignores texture settings"
+    );
+    let warped = render(Args { warp: 0.8, ..ARGS });
+    assert!(render(ARGS) != warped, "a warp changes the image");
+    let e = Args {
+        kind: "polka-dots",
+        texture: [7.0, f64::NAN],
+        ..ARGS
+    }
+    .build()
+    .unwrap_err();
+    assert!(e.contains("texture radius"), "{e}");
+    let e = Args {
+        warp: 2000.0,
+        ..ARGS
+    }
+    .build()
+    .unwrap_err();
+    assert!(e.contains("warp amplitude 2000"), "{e}");
+    let e = Args {
+        warp: 0.5,
+        period: 8.0,
+        ..ARGS
+    }
+    .build()
+    .unwrap_err();
+    assert!(e.contains("cannot be combined"), "{e}");
 }
 
 /// Gabor noise's controls: the spectrum view's lobes sit at the frequency along the direction
