@@ -28,7 +28,7 @@ echo "packed target/npm/$tarball: $(wc -c < "target/npm/$tarball") bytes;" \
 cd target/npm/app
 echo '{ "name": "app", "private": true, "type": "module" }' > package.json
 npm install --no-audit --no-fund --silent "../$tarball"
-cp "$root"/bindings/wasm/tests/{node.test.mjs,example.ts,page.html} .
+cp "$root"/bindings/wasm/tests/{node.test.mjs,checks.mjs,example.ts,page.html} .
 cp "$root/tests/e2e/node_modules/simplex-noise/dist/esm/simplex-noise.js" .
 BANDNOISE_ROOT=$root node --test node.test.mjs
 

@@ -9,6 +9,7 @@ import { chromium } from 'playwright-core';
 import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
+import { parseChecks } from '../../bindings/wasm/tests/checks.mjs';
 
 const [app, checksPath] = process.argv.slice(2);
 const PORT = 8124;
@@ -34,13 +35,12 @@ try {
     try { await body(); console.log(`ok   ${name}`); } catch (e) { failed++; console.log(`FAIL ${name}\n     ${e.message}`); }
   };
   await test('the crate\'s f32 checksums of every description, in Chromium', async () => {
-    const checks = [...readFileSync(checksPath, 'utf8')
-      .matchAll(/\{"([^"]+)", (\d), (\d+), 0x([0-9a-f]+)u, 0x([0-9a-f]+)u\}/g)];
+    const checks = parseChecks(readFileSync(checksPath, 'utf8'));
     assert.equal(checks.length, 110);
     const differ = [];
-    for (const m of checks) {
-      const got = await page.evaluate(([t, d, r]) => window.runChecksum(t, d, r), [m[1], Number(m[2]), Number(m[3])]);
-      if (got !== parseInt(m[5], 16)) differ.push(`${m[1]} (${m[2]}D)`);
+    for (const c of checks) {
+      const got = await page.evaluate(([t, d, r]) => window.runChecksum(t, d, r), [c.text, c.dims, c.range]);
+      if (got !== c.f32) differ.push(`${c.text} (${c.dims}D)`);
     }
     assert.deepEqual(differ, []);
   });

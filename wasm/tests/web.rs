@@ -121,6 +121,14 @@ fn canvas() -> CanvasRenderingContext2d {
     c.get_context("2d").unwrap().unwrap().dyn_into().unwrap()
 }
 
+/// The RGBA pixels of a 64² frame of `args`, drawn on `ctx`.
+fn pixels(ctx: &CanvasRenderingContext2d, args: Args) -> Vec<u8> {
+    let mut demo = Demo::new(64).unwrap();
+    demo.render(&args.build().unwrap());
+    demo.draw(ctx).unwrap();
+    ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
+}
+
 #[wasm_bindgen_test]
 fn every_noise_renders_and_draws() {
     let mut demo = Demo::new(64).unwrap();
@@ -504,12 +512,7 @@ fn sparse_density_and_kernel_change_the_image() {
 #[wasm_bindgen_test]
 fn wiener_covariance_changes_the_image() {
     let ctx = canvas();
-    let render = |args: Args| {
-        let mut demo = Demo::new(64).unwrap();
-        demo.render(&args.build().unwrap());
-        demo.draw(&ctx).unwrap();
-        ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
-    };
+    let render = |args: Args| pixels(&ctx, args);
     let wiener = Args {
         kind: "wiener",
         zoom: 8.0,
@@ -543,12 +546,7 @@ fn wiener_covariance_changes_the_image() {
 #[wasm_bindgen_test]
 fn texture_settings_and_warp_change_the_image() {
     let ctx = canvas();
-    let render = |args: Args| {
-        let mut demo = Demo::new(64).unwrap();
-        demo.render(&args.build().unwrap());
-        demo.draw(&ctx).unwrap();
-        ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
-    };
+    let render = |args: Args| pixels(&ctx, args);
     let wood = Args {
         kind: "wood",
         zoom: 8.0,
