@@ -11,8 +11,8 @@
 //!
 //! Wavelet and multiband noise use the quantized tiles ([`I16Tiles`], 72 KiB instead of 144 KiB
 //! of `f32`): the module is downloaded by every page that uses it. Their values differ from the
-//! `f32` tiles' by the quantization (below 2⁻¹² of the noise's range), and equal those of the C
-//! library's firmware builds and of `bandnoise-checks`.
+//! `f32` tiles' by the quantization (at most 1.2e-4: [`bandnoise::wavelet`]'s docs), and equal
+//! those of the C library's firmware builds and of `bandnoise-checks`.
 
 use bandnoise::batch::Grid;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};

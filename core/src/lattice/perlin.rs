@@ -356,8 +356,13 @@ const fn in_type<R: Real, const N: usize>(g: [i8; N]) -> [R; N] {
     v
 }
 
+// `corner_hashes` is inlined in WebAssembly builds without `small` (the npm package's, the
+// browser benchmark's): left out of line there, its 16 hashes go through memory and a 2D point
+// sample takes 1.6× the time (bench/README.md, "the npm package in Chromium"). Elsewhere the
+// compiler decides (the firmware's flash, the demo's module budget).
 impl Lattice<1> for Perlin {
     type Fade = Quintic;
+    #[cfg_attr(all(target_arch = "wasm32", not(feature = "small")), inline)]
     fn corner_hashes(&self, cell: [i32; 1]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
@@ -370,6 +375,7 @@ impl Lattice<1> for Perlin {
 
 impl Lattice<2> for Perlin {
     type Fade = Quintic;
+    #[cfg_attr(all(target_arch = "wasm32", not(feature = "small")), inline)]
     fn corner_hashes(&self, cell: [i32; 2]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
@@ -391,6 +397,7 @@ impl Lattice<2> for Perlin {
 
 impl Lattice<3> for Perlin {
     type Fade = Quintic;
+    #[cfg_attr(all(target_arch = "wasm32", not(feature = "small")), inline)]
     fn corner_hashes(&self, cell: [i32; 3]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
@@ -412,6 +419,7 @@ impl Lattice<3> for Perlin {
 impl Lattice<4> for Perlin {
     type Fade = Quintic;
     gradient_corners!(4, mul_unit);
+    #[cfg_attr(all(target_arch = "wasm32", not(feature = "small")), inline)]
     fn corner_hashes(&self, cell: [i32; 4]) -> [u32; MAX_CORNERS] {
         self.corners(cell)
     }
