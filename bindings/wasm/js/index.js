@@ -97,8 +97,8 @@ export class Noise {
     checkAxes('size', size, this.dims);
     let length = 1;
     for (const s of size) length *= s;
-    if (!Number.isSafeInteger(length) || length < 0 || length > 2 ** 32) {
-      throw new RangeError(`a grid's size is whole numbers of points from 0 to 2^32, not ${size.join('×')}`);
+    if (!Number.isSafeInteger(length) || length < 0 || length >= 2 ** 32) {
+      throw new RangeError(`a grid has a whole number of points below 2^32, not ${size.join('×')}`);
     }
     return this.fillGrid(new Float32Array(length), origin, step, size);
   }

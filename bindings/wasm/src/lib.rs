@@ -164,7 +164,7 @@ impl RawNoise {
     /// # Errors
     ///
     /// Lengths of `origin`, `step` or `size` other than `dims`, a size that is not a
-    /// whole number in `0..=2³²`, or an `out` whose length is not the grid's point count.
+    /// whole number below 2³², or an `out` whose length is not the grid's point count.
     pub fn fill_grid(
         &mut self,
         out: &Float32Array,
@@ -186,9 +186,10 @@ impl RawNoise {
         }
         let mut sizes = [0usize; 4];
         for (s, &v) in sizes.iter_mut().zip(size) {
-            if !(v.fract() == 0.0 && (0.0..=4_294_967_296.0).contains(&v)) {
+            // Below 2³², so that the cast is exact where `usize` has 32 bits.
+            if !(v.fract() == 0.0 && (0.0..4_294_967_296.0).contains(&v)) {
                 return Err(error(format_args!(
-                    "a grid's size is a whole number of points from 0 to 2^32, not {v}"
+                    "a grid's size is a whole number of points below 2^32, not {v}"
                 )));
             }
             *s = v as usize;
@@ -205,7 +206,7 @@ impl RawNoise {
                     .map(|s| s.to_string())
                     .collect::<Vec<_>>()
                     .join("×"),
-                len.map_or_else(|| "more than 2^32".to_string(), |n| n.to_string()),
+                len.map_or_else(|| "2^32 or more".to_string(), |n| n.to_string()),
                 out.length()
             )));
         };

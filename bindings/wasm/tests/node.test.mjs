@@ -65,6 +65,9 @@ test('errors are Errors with the crate\'s message', () => {
   assert.throws(() => noise.fillGrid(new Float32Array(4), [0], [1, 1], [2, 2]), /origin has 2 numbers, not 1/);
   assert.throws(() => noise.fillGrid(new Float32Array(4), [0, 0], [1, 1], [2, -2]), /whole number/);
   assert.throws(() => noise.fillGrid(new Float32Array(4), [0, 0], [1, 1], [2, 1.5]), /whole number/);
+  // 2³² points along an axis do not fit a 32-bit index: refused, not cast.
+  assert.throws(() => noise.fillGrid(new Float32Array(4), [0, 0], [1, 1], [2 ** 32, 1]), /below 2\^32/);
+  assert.throws(() => noise.fillGrid(new Float32Array(4), [0, 0], [1, 1], [2 ** 31, 2]), /2\^32 or more/);
   assert.throws(() => noise.fillGrid(new Float32Array(4), [0, 0], ['a', 1], [2, 2]), TypeError);
   assert.throws(() => new Cellular({ octaves: 3 }), Error);
   // The noise still works after its errors.
