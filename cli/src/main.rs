@@ -238,13 +238,8 @@ fn sample(spec: &Spec, f: &Frame) -> Result<(Vec<f32>, f32), String> {
         );
         let mut row = vec![R::ZERO; n];
         for (j, chunk) in out.chunks_mut(n).enumerate() {
-            let mut index = [0usize; D];
-            index[1] = j;
-            let mut row_size = [1usize; D];
-            row_size[0] = n;
-            let grid = Grid::new(whole.point(index), whole.step, row_size);
             noise
-                .fill_grid(&grid, &mut row)
+                .fill_grid(&whole.row(j), &mut row)
                 .map_err(|e| e.to_string())?;
             for (o, v) in chunk.iter_mut().zip(&row) {
                 *o = v.to_f32();

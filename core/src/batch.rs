@@ -108,6 +108,59 @@ impl<R: Real, const D: usize> Grid<R, D> {
         core::array::from_fn(|a| self.coordinate(a, index[a]))
     }
 
+    /// The number of rows, the grid's lines of points along axis 0 (0 for an empty grid).
+    #[must_use]
+    pub fn rows(&self) -> usize {
+        if self.is_empty() {
+            return 0;
+        }
+        self.size
+            .iter()
+            .skip(1)
+            .fold(1usize, |n, &s| n.saturating_mul(s))
+    }
+
+    /// Row `row` as a grid of its own: its points along axis 0, one along each other axis
+    /// (rows are numbered with axis 1 fastest, as the grid's values are laid out). Its values
+    /// are the full grid's row, bit for bit: its origin is the row's first point, except along
+    /// axis 0, where it is the grid's. For filling a large grid a bounded buffer at a time.
+    ///
+    /// # Examples
+    ///
+    /// ```
+    /// use bandnoise::prelude::*;
+    ///
+    /// let noise = Perlin::new(3);
+    /// let grid = Grid::new([0.37f32, -0.61, 2.3], [0.0731, 0.113, -0.29], [7, 5, 3]);
+    /// let mut whole = vec![0.0f32; grid.len()];
+    /// noise.fill_grid(&grid, &mut whole)?;
+    /// assert_eq!(grid.rows(), 15);
+    /// let mut row = [0.0f32; 7];
+    /// for (r, expected) in whole.chunks(7).enumerate() {
+    ///     noise.fill_grid(&grid.row(r), &mut row)?;
+    ///     assert_eq!(row.map(f32::to_bits), <[f32; 7]>::try_from(expected)?.map(f32::to_bits));
+    /// }
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn row(&self, row: usize) -> Self {
+        let mut origin = self.row_start(row);
+        let mut size = [1usize; D];
+        if let (Some(o), Some(s), Some(&o0), Some(&s0)) = (
+            origin.first_mut(),
+            size.first_mut(),
+            self.origin.first(),
+            self.size.first(),
+        ) {
+            (*o, *s) = (o0, s0);
+        }
+        Self {
+            origin,
+            step: self.step,
+            size,
+        }
+    }
+
     /// The first point of row `row` (rows are numbered with axis 1 fastest): its coordinates
     /// along axes 1.. are those of every point of the row. The grid must not be empty.
     pub(crate) fn row_start(&self, row: usize) -> [R; D] {

@@ -223,9 +223,8 @@ impl RawNoise {
     }
 }
 
-/// [`RawNoise::fill_grid`] for a checked, non-empty grid: each row (the points along axis 0)
-/// is a grid of its own whose origin is the full grid's point, so its values are the full
-/// grid's bit for bit; rows gather in `scratch` up to [`CHUNK`] values per copy to `out`.
+/// [`RawNoise::fill_grid`] for a checked, non-empty grid: row by row ([`Grid::row`], the full
+/// grid's values bit for bit), gathered in `scratch` up to [`CHUNK`] values per copy to `out`.
 fn fill<const D: usize>(
     noise: &SpecNoise<D, I16Tiles>,
     scratch: &mut Vec<f32>,
@@ -242,30 +241,14 @@ where
         core::array::from_fn(|a| step[a]),
         core::array::from_fn(|a| sizes[a]),
     );
-    let row = grid.size[0];
-    let rows = grid.len() / row;
+    let (row, rows) = (grid.size[0], grid.rows());
     let per_copy = (CHUNK / row).max(1);
     scratch.resize(per_copy * row, 0.0);
-    let mut index = [0usize; D];
     let mut r = 0;
     while r < rows {
         let count = per_copy.min(rows - r);
-        for chunk in scratch[..count * row].chunks_exact_mut(row) {
-            let mut start = grid.point(index);
-            start[0] = grid.origin[0];
-            let mut size = [1usize; D];
-            size[0] = row;
-            noise
-                .fill_grid(&Grid::new(start, grid.step, size), chunk)
-                .map_err(error)?;
-            // The next row: axis 1 fastest.
-            for (i, &s) in index.iter_mut().zip(&grid.size).skip(1) {
-                *i += 1;
-                if *i < s {
-                    break;
-                }
-                *i = 0;
-            }
+        for (k, chunk) in scratch[..count * row].chunks_exact_mut(row).enumerate() {
+            noise.fill_grid(&grid.row(r + k), chunk).map_err(error)?;
         }
         let at = (r * row) as u32;
         out.subarray(at, at + (count * row) as u32)
