@@ -785,3 +785,33 @@ fn long_thin_footprints_stay_bounded() {
         }
     }
 }
+
+/// Fixed point takes a point to cell units modulo 2¹⁶ cells (the type's docs, "Fixed point"):
+/// just below 2¹⁵ kernel radii it still follows the `f64` noise within 2e-3 (as
+/// `fixed_point_follows_f32` near the origin; `f32` itself strays by up to 0.05 there, its
+/// rounding of `p / r` being 2⁻⁹ cells), just beyond it reads other cells (an unrelated value
+/// within the bound). The fuzz target `impulse` found the limit, at `a = 127.6`.
+#[test]
+fn fixed_point_follows_up_to_its_cell_range() {
+    for a in [2.0f32, 10.0, 100.0] {
+        let noise = Gabor::<1>::new(3).with_spectrum(a, a).unwrap();
+        let limit = 32768.0 * noise.radius();
+        let bound = Noise::<f32, 1>::amplitude_bound(&noise);
+        let worst = |from: f64| {
+            (0..4000)
+                .map(|i| {
+                    let q = I16F16::from_num(limit * (from + 0.009 * f64::from(i) / 4000.0));
+                    let w: I16F16 = noise.sample([q]);
+                    assert!(w.to_num::<f32>().abs() <= bound);
+                    let exact: f64 = noise.sample([q.to_num::<f64>()]);
+                    (w.to_num::<f64>() - exact).abs()
+                })
+                .fold(0.0, f64::max)
+        };
+        let (inside, beyond) = (worst(0.99), worst(1.001));
+        println!(
+            "a = {a}, limit {limit:.1}: |I16F16 − f64| ≤ {inside:.1e} below, {beyond:.2} beyond"
+        );
+        assert!(inside < 2e-3 && beyond > 1.0, "a = {a}: {inside} {beyond}");
+    }
+}

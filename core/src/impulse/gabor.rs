@@ -254,6 +254,16 @@ struct Params<R, const D: usize> {
 /// kernel volume (OpenShadingLanguage's default) with Poisson counts and ±1 weights, and
 /// magnitude `K = 1` (variance 1).
 ///
+/// # Fixed point
+///
+/// A point is taken to cell units, `p / r`, before the walk. In I16F16 that product wraps
+/// modulo 2¹⁶ cells ([`Real::wrapping_mul`], as octave frequencies do): where `|p| / r` reaches
+/// 2¹⁵ (32768 kernel radii: `|p| ≥ 32768 · 0.977 / a`, so only for bandwidths above 0.977, whose
+/// radius is under a unit; at `a = 2`, from 16,000 units) the fixed-point noise reads another
+/// cell than `f32` does: a defined value of the same noise, but not `f32`'s. Below that, fixed
+/// point follows the noise within the tables' and roundings' error (`tests/tests/gabor.rs`:
+/// within 2e-3 of `f64` up to the limit, where `f32`'s own rounding of `p / r` is 2⁻⁹ cells).
+///
 /// # Amplitude
 ///
 /// Variance `K²` and mean 0 (see [Normalisation](Self#normalisation)). Each of the `3^D` cells holds at
