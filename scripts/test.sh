@@ -55,7 +55,9 @@ if [ "$size" -gt 195000 ]; then
 fi
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
 node tests/e2e/demo.test.mjs
-# The npm package: packed, installed into an empty folder, used from Node, TypeScript and Chromium.
+# The npm package: its SIMD point kernel equals the portable one (Node), then the package packed,
+# installed into an empty folder, used from Node, TypeScript and Chromium.
+cargo test -p bandnoise-js --target wasm32-unknown-unknown --test kernel
 bash scripts/npm.sh
 
 step "firmware under QEMU: the host's checksums on Cortex-M0, Cortex-M4F and RV32IMC"

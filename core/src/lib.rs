@@ -82,8 +82,8 @@
 //!   never a panic (see [`Noise`]).
 //! * `f32` and `f64` results use only IEEE `+ − × ÷` (and `libm` where more is needed), so they
 //!   are bit-identical on every target; fixed point is integer arithmetic and bit-identical
-//!   everywhere. Where a target has a hand-vectorised kernel (Perlin 2D/3D in `f32` on x86-64,
-//!   SSE2; all of them in one module, chosen by `cfg`), it performs the same operations in the
+//!   everywhere. Where a target has a hand-vectorised kernel (Perlin 2D/3D/4D in `f32` on x86-64
+//!   with SSE2 and in WebAssembly with `simd128`; all of them in one module, chosen by `cfg`), it performs the same operations in the
 //!   same order: the values are the same.
 #![no_std]
 #![forbid(unsafe_code)]

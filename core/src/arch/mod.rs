@@ -6,26 +6,40 @@
 //!
 //! | kernel | targets | fallback |
 //! |---|---|---|
-//! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture) | `None`: the shared kernel of [`lattice`](crate::lattice) |
-//! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`, four lanes at a time) | one lane at a time |
+//! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture); wasm32 with `simd128` and without the `small` feature: one kernel ([`vector`]) over each target's 4-lane vector | `None`: the shared kernel of [`lattice`](crate::lattice) |
+//! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`), wasm32 as above (`f32x4.sqrt`), four lanes at a time | one lane at a time |
 //! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
 //! so the choice changes speed only, never a bit of a result (each kernel's tests compare them).
 //! There is no run-time feature detection: the build's target features decide, so the kernels
-//! stay within the crate's `forbid` lint (intrinsics come through `safe_arch`).
+//! stay within the crate's `forbid` lint (intrinsics come through `safe_arch` on x86-64 and
+//! `core::arch::wasm32`'s safe functions in WebAssembly).
 
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 mod x86_64;
 #[cfg(all(target_arch = "x86_64", target_feature = "sse2"))]
 use x86_64 as selected;
 
-#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+// `bandnoise_vector` (build.rs): x86-64 with SSE2, or wasm32 with simd128 and without `small`.
+#[cfg(all(target_arch = "wasm32", bandnoise_vector))]
+mod wasm32;
+#[cfg(all(target_arch = "wasm32", bandnoise_vector))]
+use wasm32 as selected;
+
+#[cfg(bandnoise_vector)]
+mod vector;
+#[cfg(bandnoise_vector)]
+use vector as perlin_point;
+
+#[cfg(not(bandnoise_vector))]
 mod portable;
-#[cfg(not(all(target_arch = "x86_64", target_feature = "sse2")))]
+#[cfg(not(bandnoise_vector))]
+use portable as perlin_point;
+#[cfg(not(bandnoise_vector))]
 use portable as selected;
 
-// The kernels of the selected implementation, each with the same signature in every one:
+// The kernels, each with the same signature in every implementation:
 //
 // * `PERLIN_POINT`: whether this target has the Perlin point kernels (a constant, so callers
 //   skip the `f32` conversions where it has not).
@@ -34,17 +48,17 @@ use portable as selected;
 //   where the target has no kernel or leaves the point to the shared one (non-finite or beyond
 //   ±2³¹).
 // * `PerlinPairs`: a seed's table for the point kernels, built by `const fn` from the doubled
-//   permutation (16 KiB on x86-64, empty where no kernel uses it), and `perlin2_paired`,
-//   `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
+//   permutation (16 KiB where there is a kernel, empty where there is none), and
+//   `perlin2_paired`, `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
 // * `OCTAVES_AS_LANES`: whether a sum of octaves is faster as one lattice body over the octaves
 //   as lanes (vector units) than as one body per octave (scalar cores, where the lanes' values
 //   spill to the stack). Either gives the same bits.
 // * `sqrt_lanes(x)`: `Real::sqrt` of each lane (`√x` for `x > 0`, else 0), in place. IEEE
 //   square roots are correctly rounded, so a vector instruction gives libm's bits.
-pub(crate) use selected::{
-    OCTAVES_AS_LANES, PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired,
-    perlin4, sqrt_lanes,
+pub(crate) use perlin_point::{
+    PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
 };
+pub(crate) use selected::{OCTAVES_AS_LANES, sqrt_lanes};
 
 #[cfg(test)]
 mod tests {

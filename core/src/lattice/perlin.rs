@@ -5,8 +5,9 @@
 //! repeated to make 16) exactly as in Perlin's reference `grad`, so that with seed 0 the f64 noise
 //! reproduces his reference values bit for bit.
 //!
-//! In `f32`, 2D and 3D sampling runs the target's vector kernel where [`arch`] has
-//! one (x86-64), with the same values; see [`Perlin`]'s performance notes.
+//! In `f32`, 2D, 3D and 4D sampling runs the target's vector kernel where [`arch`] has
+//! one (x86-64; wasm32 with `simd128`), with the same values; see [`Perlin`]'s performance
+//! notes.
 
 use super::kernel::{MAX_CORNERS, Quintic};
 use super::periodic::WrapCorners;
@@ -23,8 +24,9 @@ use crate::hash::chain::{self, ChainHash, Doubled, Order, Wrap};
 ///   2D uses the same function with `z = 0` (edges projected onto the plane: diagonals and axes).
 ///   1D uses the 8 slopes `±¼, ±½, ±¾, ±1` from `h & 7`. 4D uses the 32 edges of the
 ///   tesseract (one zero component, three ±1) from `h & 31`.
-/// * **Speed**: in `f32` on x86-64, 2D and 3D `sample` run an SSE2 kernel (same values, bit
-///   for bit). For many samples, the batch API ([`Noise::fill_grid`](crate::Noise::fill_grid))
+/// * **Speed**: in `f32` on x86-64 and in WebAssembly built with `simd128` (without the
+///   `small` feature), 2D, 3D and 4D `sample` run a 4-lane vector kernel (same values, bit for
+///   bit). For many samples, the batch API ([`Noise::fill_grid`](crate::Noise::fill_grid))
 ///   is several times faster still (`bench/README.md`).
 /// * **Size**: 512 bytes on every target (the permutation, doubled), so it is cheap to copy,
 ///   but sampling takes `&self`: build it once and share it.
@@ -142,14 +144,15 @@ impl Default for Perlin {
 /// [`Perlin`] with a per-seed table for the point kernel: the same noise bit for bit, faster
 /// where the target's vector kernel can use the table, at the cost of its size.
 ///
-/// On x86-64, 2D and 3D point sampling in `f32` look up the gradients of two neighbouring
+/// On x86-64 (and in WebAssembly with `simd128`), 2D and 3D point sampling in `f32` look up the gradients of two neighbouring
 /// corners in one 16 KiB table (the gradients that Perlin's `grad` picks for `p[b]` and
 /// `p[b + 1]`, for every `b`), one dependent lookup fewer than [`Perlin`], whose kernel first
 /// reads `p[b]` and `p[b + 1]` and then a static row. That makes a point sample about 10%
 /// faster (`bench/README.md`). Other number types, dimensions and targets sample exactly as
 /// [`Perlin`]; there the table is empty.
 ///
-/// * **Size**: 16.5 KiB on x86-64, 512 bytes elsewhere. Build it once (`static` works: `new` is
+/// * **Size**: 16.5 KiB where the vector kernel is (x86-64, WebAssembly with `simd128`), 512
+///   bytes elsewhere. Build it once (`static` works: `new` is
 ///   `const`) and share it.
 /// * Everything else (range, gradients, periodic wrapping, batches) is [`Perlin`]'s.
 ///

@@ -1,0 +1,448 @@
+//! Perlin's improved noise (Perlin 2002, "Improving Noise") at one point in 2D, 3D and 4D, in
+//! `f32`, over a 4-lane vector of `f32` ([`Lanes`]): written once here, compiled for each
+//! target's vector unit ([`x86_64`](super) SSE2, `wasm32` simd128). The axes are split and
+//! faded together, and the 4 (2D), 8 (3D) or 16 (4D) corner dot products and the lerps are
+//! done in vectors. The point kernel of [`sample_lattice`] does the same steps one number at a
+//! time.
+//!
+//! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
+//! then a gradient), and every lerp waits for the one before. The gradients of two neighbouring
+//! hash values come from one row of a static table ([`PAIR_ROWS`]), already split by axis, so
+//! the vectors need no transposition. In 4D (32 gradients, a pair table would be 32 KiB) each
+//! corner's gradient is one row of the portable kernel's `f32` gradient table (`Grad4`), and
+//! four rows are transposed into the vectors of their components.
+//!
+//! Every lane computes the operations of the shared kernel on the same numbers in the same order
+//! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
+//! bit; a test compares them over random and edge-case points (natively; in WebAssembly,
+//! `bindings/wasm/tests/kernel.rs` compares the point kernel with the batch kernels).
+//!
+//! [`sample_lattice`]: crate::lattice
+
+use crate::lattice::perlin::{GRAD3, Grad4};
+
+use super::selected::F32x4;
+
+/// The operations the kernels need of a target's 4-lane `f32` vector, each one instruction or a
+/// few. Lane order is memory order: `from_array([a, b, c, d])` has `a` in lane 0.
+pub(super) trait Lanes: Copy {
+    /// The vector of four values.
+    fn from_array(a: [f32; 4]) -> Self;
+    /// A row of a table.
+    fn load(row: &[f32; 4]) -> Self;
+    /// `v` in every lane.
+    fn splat(v: f32) -> Self;
+    /// IEEE `+`, lane by lane.
+    fn add(self, o: Self) -> Self;
+    /// IEEE `−`, lane by lane.
+    fn sub(self, o: Self) -> Self;
+    /// IEEE `×`, lane by lane.
+    fn mul(self, o: Self) -> Self;
+    /// Lane `L` in every lane.
+    fn broadcast<const L: usize>(self) -> Self;
+    /// `[a₀, a₂, b₀, b₂]`.
+    fn evens(self, b: Self) -> Self;
+    /// `[a₁, a₃, b₁, b₃]`.
+    fn odds(self, b: Self) -> Self;
+    /// `[a₀, b₀, a₁, b₁]`.
+    fn interleave_low(self, b: Self) -> Self;
+    /// `[a₂, b₂, a₃, b₃]`.
+    fn interleave_high(self, b: Self) -> Self;
+    /// `[a₀, a₁, b₀, b₁]`.
+    fn low_halves(self, b: Self) -> Self;
+    /// `[a₂, a₃, a₂, a₃]`.
+    fn high_half(self) -> Self;
+    /// `[a₀, a₀, a₁, a₁]`.
+    fn low_pairs(self) -> Self;
+    /// `[a₂, a₂, a₃, a₃]`.
+    fn high_pairs(self) -> Self;
+    /// Lane 0.
+    fn first(self) -> f32;
+    /// The transposition of four rows: lane `i` of result `j` is lane `j` of row `i`.
+    fn transpose(rows: [Self; 4]) -> [Self; 4];
+    /// [`Real::split`](crate::Real::split) of the lanes `axes` selects (a bit per lane): the
+    /// cells reduced mod 256 and the fractions. `None` leaves the point to the shared kernel: a
+    /// coordinate outside `(−2^31, 2^31)` or not finite, or a negative one so small that its
+    /// fraction rounds to 1 (the next cell, fraction 0, in `Real::split`). Leaving that rare case
+    /// out keeps the cells, and so the hash chain that waits for them, one comparison earlier.
+    ///
+    /// The fraction of `−0.0` may stay `−0.0` (the shared kernel adds `+0.0`); that changes at
+    /// most the sign of a zero in the sum, which [`finish`] canonicalises like the shared
+    /// kernel.
+    fn split(self, axes: u32) -> Option<([usize; 4], Self)>;
+}
+
+pub(crate) const PERLIN_POINT: bool = true;
+
+#[inline]
+pub(crate) fn perlin2(p: &[u8; 512], x: f32, y: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample2::<F32x4>(x, y)
+}
+
+#[inline]
+pub(crate) fn perlin3(p: &[u8; 512], x: f32, y: f32, z: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample3::<F32x4>(x, y, z)
+}
+
+#[inline]
+pub(crate) fn perlin4(p: &[u8; 512], x: f32, y: f32, z: f32, w: f32) -> Option<f32> {
+    Kernel {
+        p,
+        pairs: &PAIR_ROWS,
+    }
+    .sample4::<F32x4>(x, y, z, w)
+}
+
+#[inline]
+pub(crate) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
+    Kernel { p, pairs }.sample2::<F32x4>(x, y)
+}
+
+#[inline]
+pub(crate) fn perlin3_paired(
+    p: &[u8; 512],
+    pairs: &PerlinPairs,
+    x: f32,
+    y: f32,
+    z: f32,
+) -> Option<f32> {
+    Kernel { p, pairs }.sample3::<F32x4>(x, y, z)
+}
+
+/// Where the kernel finds the gradients of `p[i]` and `p[i + 1]`, split by axis:
+/// `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]`.
+trait GradientPairs {
+    fn pair(&self, p: &[u8; 512], i: usize) -> &[[f32; 4]; 2];
+}
+
+/// The static table: look up `p[i]` and `p[i + 1]`, then their row.
+impl GradientPairs for PairRows {
+    #[inline]
+    fn pair(&self, p: &[u8; 512], i: usize) -> &[[f32; 4]; 2] {
+        let row = usize::from(p[i] & 15) | usize::from(p[i + 1] & 15) << 4;
+        &self.0[row]
+    }
+}
+
+/// A seed's table, `PAIR_ROWS` composed with the permutation: entry `b` (`b < 512`, an index of
+/// the doubled permutation `p`) is the row of `p[b]` and `p[b + 1]`. One lookup replaces two
+/// permutation lookups and a row lookup, and takes a level off the chain of dependent loads:
+/// `p[p[x] + y]` and its neighbour in 2D, `p[p[p[x] + y] + z]` and its neighbour in 3D.
+/// 16 KiB, built by `const fn`; a caller opts into it with
+/// [`TabledPerlin`](crate::lattice::TabledPerlin).
+#[derive(Clone)]
+#[repr(align(32))]
+pub(crate) struct PerlinPairs([[[f32; 4]; 2]; 512]);
+
+impl PerlinPairs {
+    pub(crate) const fn new(p: &[u8; 512]) -> Self {
+        let mut pairs = [[[0.0f32; 4]; 2]; 512];
+        let mut b = 0;
+        while b < 512 {
+            // Entry 511 is never read (b ≤ 255 + 255); its p[b + 1] wraps as p does.
+            let row = (p[b] & 15) as usize | ((p[(b + 1) & 511] & 15) as usize) << 4;
+            pairs[b] = PAIR_ROWS.0[row];
+            b += 1;
+        }
+        Self(pairs)
+    }
+}
+
+impl GradientPairs for PerlinPairs {
+    #[inline]
+    fn pair(&self, _: &[u8; 512], i: usize) -> &[[f32; 4]; 2] {
+        &self.0[i]
+    }
+}
+
+/// The gradients of every pair of hash values, split by axis: entry `i + 16·j` holds the
+/// gradients `g` and `h` that Perlin's `grad` selects for hashes `i` and `j` (mod 16) as
+/// `[gₓ, gᵧ, hₓ, hᵧ]` and `[g_z, h_z, 0, 0]`. The last step of Perlin's chain looks up two
+/// corners that differ along the innermost hashed axis, `p[b]` and `p[b + 1]`; one row gives
+/// both gradients already transposed for the dot products. 8 KiB, the same for every seed
+/// (a `static` the kernel owns, so [`Perlin`](crate::lattice::Perlin) has one size on every
+/// target).
+#[repr(align(32))]
+struct PairRows([[[f32; 4]; 2]; 256]);
+
+static PAIR_ROWS: PairRows = PairRows::new();
+
+impl PairRows {
+    const fn new() -> Self {
+        let mut rows = [[[0.0f32; 4]; 2]; 256];
+        let mut i = 0;
+        while i < 256 {
+            let g = GRAD3[i & 15];
+            let h = GRAD3[i >> 4];
+            rows[i] = [
+                [g[0] as f32, g[1] as f32, h[0] as f32, h[1] as f32],
+                [g[2] as f32, h[2] as f32, 0.0, 0.0],
+            ];
+            i += 1;
+        }
+        PairRows(rows)
+    }
+}
+
+/// The kernel over a seed's doubled permutation (see [`Perlin`](crate::lattice::Perlin)),
+/// whose hash chain `p[p[x] + y]` needs no `& 255` (every index it forms is at most
+/// 255 + 256).
+struct Kernel<'a, G> {
+    p: &'a [u8; 512],
+    pairs: &'a G,
+}
+
+impl<G: GradientPairs> Kernel<'_, G> {
+    /// Perlin's `p[i]` for `i < 512`.
+    #[inline]
+    fn p(&self, i: usize) -> usize {
+        usize::from(self.p[i])
+    }
+
+    /// The gradients of `p[i]` and `p[i + 1]` (`i < 511`).
+    #[inline]
+    fn pair(&self, i: usize) -> &[[f32; 4]; 2] {
+        self.pairs.pair(self.p, i)
+    }
+
+    /// The x and y components of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1`, in
+    /// that lane order.
+    #[inline]
+    fn gradients_xy<V: Lanes>(&self, a: usize, b: usize) -> (V, V) {
+        let [ra, rb] = [a, b].map(|i| V::load(&self.pair(i)[0]));
+        (ra.evens(rb), ra.odds(rb))
+    }
+
+    /// The noise at `(x, y)`, or `None` outside the vector path's range.
+    #[inline]
+    fn sample2<V: Lanes>(&self, x: f32, y: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(V::from_array([x, y, 0.0, 0.0]), 0b11)?;
+        let [cx, cy, ..] = cell;
+        // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
+        // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
+        // takes are the vector's halves.
+        let (gx, gy) = self.gradients_xy::<V>(self.p(cx) + cy, self.p(cx + 1) + cy);
+        let u = f.interleave_low(f.sub(V::splat(1.0))); // fx, fx − 1, fy, fy − 1
+        let (dx, dy) = (u.low_pairs(), u.high_half());
+        // g_x·d_x + g_y·d_y, the shared kernel's order.
+        let v = dx.mul(gx).add(dy.mul(gy));
+        // Along x, then y.
+        let r = lerp_halves(v, s.broadcast::<0>());
+        Some(finish(r, s.broadcast::<1>()))
+    }
+
+    /// The noise at `(x, y, z)`, or `None` outside the vector path's range.
+    #[inline]
+    fn sample3<V: Lanes>(&self, x: f32, y: f32, z: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(V::from_array([x, y, z, 0.0]), 0b111)?;
+        let [cx, cy, cz, _] = cell;
+        // Perlin's chain, x innermost: corner (i, j, k) hashes p[p[p[x + i] + y + j] + z + k].
+        let a = self.p(cx) + cy;
+        let b = self.p(cx + 1) + cy;
+        let (aa, ab) = (self.p(a) + cz, self.p(a + 1) + cz);
+        let (ba, bb) = (self.p(b) + cz, self.p(b + 1) + cz);
+        let f1 = f.sub(V::splat(1.0));
+        let u = f.interleave_low(f1); // fx, fx − 1, fy, fy − 1
+        let w = f.interleave_high(f1); // fz, fz − 1, 0, −1
+        let (dy, dz) = (u.high_pairs(), w.low_halves(w));
+        // The corners with i = 0 in one vector, i = 1 in the other, (j, k) = (0, 0), (0, 1),
+        // (1, 0), (1, 1) in lanes 0–3: the lerp along x pairs lanes, along y the halves.
+        let x0 = self.dots3(aa, ab, f.broadcast::<0>(), dy, dz);
+        let x1 = self.dots3(ba, bb, f1.broadcast::<0>(), dy, dz);
+        let r = lerp(s.broadcast::<0>(), x0, x1);
+        let q = lerp_halves(r, s.broadcast::<1>());
+        Some(finish(q, s.broadcast::<2>()))
+    }
+
+    /// The noise at `(x, y, z, w)`, or `None` outside the vector path's range.
+    #[inline]
+    fn sample4<V: Lanes>(&self, x: f32, y: f32, z: f32, w: f32) -> Option<f32> {
+        let (cell, f, s) = split_fade(V::from_array([x, y, z, w]), 0b1111)?;
+        let [cx, cy, cz, cw] = cell;
+        // Perlin's chain, x innermost: corner (i, j, k, l) hashes
+        // p[p[p[p[x + i] + y + j] + z + k] + w + l].
+        let (a0, a1) = (self.p(cx) + cy, self.p(cx + 1) + cy);
+        let b = |a: usize| (self.p(a) + cz, self.p(a + 1) + cz);
+        let c = |b: usize| (self.p(b) + cw, self.p(b + 1) + cw);
+        let ((b00, b01), (b10, b11)) = (b(a0), b(a1));
+        let f1 = f.sub(V::splat(1.0));
+        let u = f.interleave_low(f1); // fx, fx − 1, fy, fy − 1
+        let v = f.interleave_high(f1); // fz, fz − 1, fw, fw − 1
+        // Lanes hold the corners (k, l) = (0, 0), (0, 1), (1, 0), (1, 1) of one (i, j).
+        let (dz, dw) = (v.low_pairs(), v.high_half());
+        let [dx0, dx1] = [u.broadcast::<0>(), u.broadcast::<1>()];
+        let [dy0, dy1] = [u.broadcast::<2>(), u.broadcast::<3>()];
+        let dots = |b: usize, dx: V, dy: V| {
+            let (c0, c1) = c(b);
+            self.dots4([c0, c0 + 1, c1, c1 + 1], dx, dy, dz, dw)
+        };
+        // The lerps in the shared kernel's order: along x, y, z, then w.
+        let sx = s.broadcast::<0>();
+        let x0 = lerp(sx, dots(b00, dx0, dy0), dots(b10, dx1, dy0));
+        let x1 = lerp(sx, dots(b01, dx0, dy1), dots(b11, dx1, dy1));
+        let r = lerp(s.broadcast::<1>(), x0, x1);
+        let q = lerp_halves(r, s.broadcast::<2>());
+        Some(finish(q, s.broadcast::<3>()))
+    }
+
+    /// The dot products of the 4D gradients of `p[i]` for the four hash inputs `i` with the
+    /// offsets, one corner per lane, in the shared kernel's order
+    /// `((d_x·g_x + d_y·g_y) + d_z·g_z) + d_w·g_w` (its zero term changes at most the sign of a
+    /// zero, which [`finish`] canonicalises).
+    #[inline]
+    fn dots4<V: Lanes>(&self, i: [usize; 4], dx: V, dy: V, dz: V, dw: V) -> V {
+        // A reference, so the table is a promoted static, not built on the stack.
+        let table: &[[f32; 4]; 32] = &Grad4::<f32>::TABLE;
+        let [gx, gy, gz, gw] = V::transpose(i.map(|i| V::load(&table[self.p(i) & 31])));
+        dx.mul(gx).add(dy.mul(gy)).add(dz.mul(gz)).add(dw.mul(gw))
+    }
+
+    /// The dot products of the gradients of hash inputs `a`, `a + 1`, `b`, `b + 1` with the
+    /// offsets, in the shared kernel's order `(d_x·g_x + d_y·g_y) + d_z·g_z`, one corner per
+    /// lane.
+    #[inline]
+    fn dots3<V: Lanes>(&self, a: usize, b: usize, dx: V, dy: V, dz: V) -> V {
+        let (gx, gy) = self.gradients_xy::<V>(a, b);
+        let [za, zb] = [a, b].map(|i| V::load(&self.pair(i)[1]));
+        let gz = za.low_halves(zb);
+        dx.mul(gx).add(dy.mul(gy)).add(dz.mul(gz))
+    }
+}
+
+/// [`Lanes::split`], and the quintic fade of the fractions: the cells, the fractions and the
+/// faded fractions.
+#[inline]
+fn split_fade<V: Lanes>(v: V, axes: u32) -> Option<([usize; 4], V, V)> {
+    let (cells, f) = v.split(axes)?;
+    // Perlin's order: t·t·t·(t·(t·6 − 15) + 10).
+    let t3 = f.mul(f).mul(f);
+    let inner = f.mul(V::splat(6.0)).sub(V::splat(15.0));
+    let s = t3.mul(f.mul(inner).add(V::splat(10.0)));
+    Some((cells, f, s))
+}
+
+/// Perlin's `lerp(t, a, b) = a + t·(b − a)`, lane by lane.
+#[inline]
+fn lerp<V: Lanes>(t: V, a: V, b: V) -> V {
+    a.add(t.mul(b.sub(a)))
+}
+
+/// [`lerp`] of the pairs `(v0, v2)` and `(v1, v3)`, in lanes 0 and 1.
+#[inline]
+fn lerp_halves<V: Lanes>(v: V, t: V) -> V {
+    lerp(t, v, v.high_half())
+}
+
+/// The last interpolation step, `lerp(t, v0, v1)`, then `+ 0.0` as
+/// [`Real::canonical`](crate::Real::canonical) does.
+#[inline]
+fn finish<V: Lanes>(v: V, t: V) -> f32 {
+    let (v0, v1, t) = (v.first(), v.broadcast::<1>().first(), t.first());
+    (v0 + t * (v1 - v0)) + 0.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{F32x4, GradientPairs, Kernel, PAIR_ROWS, PerlinPairs};
+    use crate::lattice::{Perlin, sample_lattice};
+
+    /// Random coordinates of every magnitude (random bit patterns: NaN, ±∞, subnormals, huge)
+    /// and in the range where noise is usually sampled, with the edge cases of `split`.
+    fn points(n: usize) -> impl Iterator<Item = [f32; 4]> {
+        let mut state = 0x853c_49e6_748f_ea9b_u64;
+        let edges = [
+            0.0,
+            -0.0,
+            -1e-30,
+            1e-30,
+            -1e-8,
+            0.999_999_94,
+            -0.999_999_94,
+            255.5,
+            256.0,
+            -256.0,
+            4_194_303.5,
+            -4_194_303.5,
+            4_194_304.0,
+            -4_194_304.0,
+            2_147_483_520.0,
+            -2_147_483_520.0,
+            2_147_483_648.0,
+            -2_147_483_648.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            f32::MAX,
+            f32::MIN_POSITIVE,
+        ];
+        let edge_points = edges
+            .into_iter()
+            .flat_map(move |x| edges.into_iter().map(move |y| [x, y, -y, x]));
+        let random = core::iter::repeat_with(move || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            let bits = state;
+            let coordinate = |shift: u32| {
+                let v = (bits >> shift) as u32;
+                if bits & 1 == 0 {
+                    f32::from_bits(v)
+                } else {
+                    (v >> 8) as f32 / 65_536.0 - 128.0
+                }
+            };
+            let w = if bits >> 63 == 0 {
+                coordinate(11)
+            } else {
+                -coordinate(32)
+            };
+            [coordinate(0), coordinate(21), coordinate(42), w]
+        });
+        edge_points.chain(random.take(n))
+    }
+
+    /// The kernel over `pairs` against the shared kernel, bit for bit.
+    fn check<G: GradientPairs>(perlin: &Perlin, pairs: &G) {
+        let kernel = Kernel {
+            p: perlin.doubled(),
+            pairs,
+        };
+        let mut vector_path = [0usize; 3];
+        for [x, y, z, w] in points(200_000) {
+            let expected2: f32 = sample_lattice(perlin, [x, y]);
+            if let Some(v) = kernel.sample2::<F32x4>(x, y) {
+                assert_eq!(v.to_bits(), expected2.to_bits(), "2D ({x}, {y})");
+                vector_path[0] += 1;
+            }
+            let expected3: f32 = sample_lattice(perlin, [x, y, z]);
+            if let Some(v) = kernel.sample3::<F32x4>(x, y, z) {
+                assert_eq!(v.to_bits(), expected3.to_bits(), "3D ({x}, {y}, {z})");
+                vector_path[1] += 1;
+            }
+            let expected4: f32 = sample_lattice(perlin, [x, y, z, w]);
+            if let Some(v) = kernel.sample4::<F32x4>(x, y, z, w) {
+                assert_eq!(v.to_bits(), expected4.to_bits(), "4D ({x}, {y}, {z}, {w})");
+                vector_path[2] += 1;
+            }
+        }
+        // Half the random points are in range: the vector path was exercised.
+        assert!(vector_path.iter().all(|&n| n > 90_000), "{vector_path:?}");
+    }
+
+    #[test]
+    fn vector_kernel_is_the_shared_kernel_bit_for_bit() {
+        for seed in [0, 1, 0xdead_beef] {
+            let perlin = Perlin::new(seed);
+            check(&perlin, &PAIR_ROWS);
+            check(&perlin, &PerlinPairs::new(perlin.doubled()));
+        }
+    }
+}
