@@ -5,12 +5,14 @@
 import init, { initSync, RawNoise, bases as rawBases, dimensionMask } from './bandnoise_js.js';
 
 const wasmUrl = new URL('./bandnoise_js_bg.wasm', import.meta.url);
+/** The module's exports: `Noise.sample` calls them directly (see `Noise`). */
+let wasm;
 if (wasmUrl.protocol === 'file:') {
   // Node, Deno and Bun read the file (their fetch does not take file: URLs).
   const { readFile } = await import('node:fs/promises');
-  initSync({ module: await readFile(wasmUrl) });
+  wasm = initSync({ module: await readFile(wasmUrl) });
 } else {
-  await init({ module_or_path: wasmUrl });
+  wasm = await init({ module_or_path: wasmUrl });
 }
 
 /** The name of every noise, in the crate's order (`Base::ALL`). */
@@ -39,6 +41,14 @@ function checkAxes(name, value, dims) {
  */
 export class Noise {
   #raw;
+  /**
+   * The noise's address in the module, which `sample` passes to the module's exports itself:
+   * wasm-bindgen's method (`RawNoise.sample2`, the same export with the same address) is one
+   * more JavaScript call per sample, 4 ns of 17 where the engine does not inline it
+   * (bench/README.md). 0 once freed: the module then throws.
+   */
+  #ptr;
+  #dims;
 
   /**
    * @param {string} text a description such as "perlin seed=7 fbm octaves=4"
@@ -50,8 +60,13 @@ export class Noise {
     }
     checkDims(dims);
     this.#raw = new RawNoise(text, dims);
-    /** The number of dimensions. */
-    this.dims = dims;
+    this.#ptr = this.#raw.__wbg_ptr;
+    this.#dims = dims;
+  }
+
+  /** The number of dimensions. */
+  get dims() {
+    return this.#dims;
   }
 
   /** The description in full (every setting written out): `fromSpec(noise.text)` is the same noise. */
@@ -61,12 +76,12 @@ export class Noise {
 
   /** The value at a point: as many coordinates as dimensions (a missing one is `NaN`). */
   sample(x, y, z, w) {
-    const raw = this.#raw;
-    switch (this.dims) {
-      case 2: return raw.sample2(x, y);
-      case 3: return raw.sample3(x, y, z);
-      case 1: return raw.sample1(x);
-      default: return raw.sample4(x, y, z, w);
+    const p = this.#ptr;
+    switch (this.#dims) {
+      case 2: return wasm.rawnoise_sample2(p, x, y);
+      case 3: return wasm.rawnoise_sample3(p, x, y, z);
+      case 1: return wasm.rawnoise_sample1(p, x);
+      default: return wasm.rawnoise_sample4(p, x, y, z, w);
     }
   }
 
@@ -85,16 +100,16 @@ export class Noise {
     if (!(out instanceof Float32Array)) {
       throw new TypeError(`fillGrid writes into a Float32Array, not ${Object.prototype.toString.call(out)}`);
     }
-    checkAxes('origin', origin, this.dims);
-    checkAxes('step', step, this.dims);
-    checkAxes('size', size, this.dims);
+    checkAxes('origin', origin, this.#dims);
+    checkAxes('step', step, this.#dims);
+    checkAxes('size', size, this.#dims);
     this.#raw.fill_grid(out, origin, step, size);
     return out;
   }
 
   /** A new Float32Array holding the grid's values (see `fillGrid`). */
   grid(origin, step, size) {
-    checkAxes('size', size, this.dims);
+    checkAxes('size', size, this.#dims);
     let length = 1;
     for (const s of size) length *= s;
     if (!Number.isSafeInteger(length) || length < 0 || length >= 2 ** 32) {
@@ -105,6 +120,7 @@ export class Noise {
 
   /** Frees the module's memory now (otherwise when the noise is garbage-collected). */
   free() {
+    this.#ptr = 0;
     this.#raw.free();
   }
 }

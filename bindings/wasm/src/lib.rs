@@ -15,6 +15,8 @@
 //! those of the C library's firmware builds and of `bandnoise-checks`.
 
 use bandnoise::batch::Grid;
+use bandnoise::lattice::{OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::{Noise, NoiseGradient};
 use js_sys::Float32Array;
@@ -29,6 +31,53 @@ enum Built {
     D4(SpecNoise<4, I16Tiles>),
 }
 
+/// A plain noise that a point sample reaches without the description's dispatch: a base whose
+/// only setting is its seed, with no sum, warp or period, built as the description builds it
+/// (the same values bit for bit: a test compares them). These kernels are short enough that
+/// the dispatch (`SpecNoise`'s nested `match`es, out of line in WebAssembly) is a sixth of a
+/// call in Chromium: 2.5 of 14.5 ns for 2D Perlin noise (`bench/README.md`). Grids take the
+/// batch kernels through the description, where the dispatch is once per grid row.
+#[derive(Clone, Debug)]
+enum Direct {
+    Perlin(Perlin),
+    OriginalPerlin(OriginalPerlin),
+    Value(ValueNoise),
+    Simplex(Simplex),
+}
+
+impl Direct {
+    /// The direct form of `spec`, if it has one.
+    fn of(spec: &Spec) -> Option<Direct> {
+        if spec.fractal().is_some() || spec.warp().is_some() || spec.period().is_some() {
+            return None;
+        }
+        let seed = spec.seed();
+        Some(match spec.base() {
+            Base::Perlin => Direct::Perlin(Perlin::new(seed)),
+            Base::OriginalPerlin => Direct::OriginalPerlin(OriginalPerlin::new(seed)),
+            Base::Value => Direct::Value(ValueNoise::new(seed)),
+            Base::Simplex => Direct::Simplex(Simplex::new(seed)),
+            _ => return None,
+        })
+    }
+
+    #[inline]
+    fn sample<const D: usize>(&self, p: [f32; D]) -> f32
+    where
+        Perlin: Noise<f32, D>,
+        OriginalPerlin: Noise<f32, D>,
+        ValueNoise: Noise<f32, D>,
+        Simplex: Noise<f32, D>,
+    {
+        match self {
+            Direct::Perlin(n) => n.sample(p),
+            Direct::OriginalPerlin(n) => n.sample(p),
+            Direct::Value(n) => n.sample(p),
+            Direct::Simplex(n) => n.sample(p),
+        }
+    }
+}
+
 /// The values a grid's rows are computed into before they are copied to the caller's array:
 /// at most this many `f32`s (64 KiB), or one row when a row is longer.
 const CHUNK: usize = 16 * 1024;
@@ -40,6 +89,7 @@ const CHUNK: usize = 16 * 1024;
 pub struct RawNoise {
     spec: Spec,
     built: Built,
+    direct: Option<Direct>,
     /// Rows of a grid on their way to the caller's array (kept between calls).
     scratch: Vec<f32>,
 }
@@ -70,6 +120,7 @@ impl RawNoise {
         }
         .map_err(|e| error(format_args!("\"{text}\" in {dims}D: {e}")))?;
         Ok(RawNoise {
+            direct: Direct::of(&spec),
             spec,
             built,
             scratch: Vec::new(),
@@ -97,32 +148,36 @@ impl RawNoise {
     /// The value at `x` of a 1D noise (`NaN` for another dimension: the wrapper calls the
     /// method of the noise's dimension).
     pub fn sample1(&self, x: f32) -> f32 {
-        match &self.built {
-            Built::D1(n) => n.sample([x]),
+        match (&self.direct, &self.built) {
+            (Some(direct), Built::D1(_)) => direct.sample([x]),
+            (_, Built::D1(n)) => n.sample([x]),
             _ => f32::NAN,
         }
     }
 
     /// The value at `(x, y)` of a 2D noise (`NaN` for another dimension).
     pub fn sample2(&self, x: f32, y: f32) -> f32 {
-        match &self.built {
-            Built::D2(n) => n.sample([x, y]),
+        match (&self.direct, &self.built) {
+            (Some(direct), Built::D2(_)) => direct.sample([x, y]),
+            (_, Built::D2(n)) => n.sample([x, y]),
             _ => f32::NAN,
         }
     }
 
     /// The value at `(x, y, z)` of a 3D noise (`NaN` for another dimension).
     pub fn sample3(&self, x: f32, y: f32, z: f32) -> f32 {
-        match &self.built {
-            Built::D3(n) => n.sample([x, y, z]),
+        match (&self.direct, &self.built) {
+            (Some(direct), Built::D3(_)) => direct.sample([x, y, z]),
+            (_, Built::D3(n)) => n.sample([x, y, z]),
             _ => f32::NAN,
         }
     }
 
     /// The value at `(x, y, z, w)` of a 4D noise (`NaN` for another dimension).
     pub fn sample4(&self, x: f32, y: f32, z: f32, w: f32) -> f32 {
-        match &self.built {
-            Built::D4(n) => n.sample([x, y, z, w]),
+        match (&self.direct, &self.built) {
+            (Some(direct), Built::D4(_)) => direct.sample([x, y, z, w]),
+            (_, Built::D4(n)) => n.sample([x, y, z, w]),
             _ => f32::NAN,
         }
     }
@@ -278,4 +333,85 @@ pub fn dimension_mask(name: &str) -> u32 {
                 .map(|d| 1 << (d - 1))
                 .sum()
         })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Direct, RawNoise};
+    use bandnoise::Noise;
+    use bandnoise::spec::{I16Tiles, Spec, SpecNoise};
+
+    /// Points off the lattice, on it, negative, far and non-finite.
+    fn points<const D: usize>() -> Vec<[f32; D]> {
+        let xs = [
+            0.37,
+            -1.5,
+            0.0,
+            -0.0,
+            3.999_999_8,
+            1e-30,
+            -2.25e5,
+            7.3e9,
+            f32::NAN,
+            f32::INFINITY,
+        ];
+        let mut state = 0x2545_f491u32;
+        let mut random = || {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            (state >> 8) as f32 / 65_536.0 - 128.0
+        };
+        (0..2000)
+            .map(|k| {
+                core::array::from_fn(|a| {
+                    if k < 100 {
+                        xs[(k + 3 * a) % 10]
+                    } else {
+                        random()
+                    }
+                })
+            })
+            .collect()
+    }
+
+    /// A plain seed-only description samples through its direct form, a layered one does not,
+    /// and both give the description's values bit for bit in 1–4D.
+    #[test]
+    fn direct_samples_are_the_description_values() {
+        fn case<const D: usize>(text: &str, direct: bool)
+        where
+            SpecNoise<D, I16Tiles>: Noise<f32, D>,
+        {
+            let spec: Spec = text.parse().unwrap();
+            assert_eq!(Direct::of(&spec).is_some(), direct, "{text}");
+            let expected = spec.build_with::<D, I16Tiles>().unwrap();
+            let raw = RawNoise::new(text, D as u32).unwrap();
+            for p in points::<D>() {
+                let got = match D {
+                    1 => raw.sample1(p[0]),
+                    2 => raw.sample2(p[0], p[1]),
+                    3 => raw.sample3(p[0], p[1], p[2]),
+                    _ => raw.sample4(p[0], p[1], p[2], p[3]),
+                };
+                let want = expected.sample(p);
+                assert_eq!(got.to_bits(), want.to_bits(), "{text} {D}D {p:?}");
+            }
+        }
+        for (text, direct) in [
+            ("perlin seed=7", true),
+            ("original seed=7", true),
+            ("value seed=7", true),
+            ("simplex seed=7", true),
+            ("value seed=7 fbm octaves=3", false),
+            ("simplex seed=7 warp=0.5", false),
+            ("cellular seed=7", false),
+        ] {
+            case::<1>(text, direct);
+            case::<2>(text, direct);
+            case::<3>(text, direct);
+            case::<4>(text, direct);
+        }
+        case::<2>("perlin seed=7 period=4,4", false);
+    }
 }

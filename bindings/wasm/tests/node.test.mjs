@@ -121,3 +121,19 @@ test('any coordinate gives a value', () => {
     assert.ok(!Number.isNaN(noise.sample(v, v)), `at ${v}`);
   }
 });
+
+test('a freed noise throws rather than reading freed memory; dims is read-only', () => {
+  for (const dims of [1, 2, 3, 4]) {
+    const noise = new Perlin({ seed: 3, dims });
+    assert.equal(typeof noise.sample(0.3, 0.7, 1.1, 1.9), 'number');
+    assert.throws(() => { noise.dims = 5; }, TypeError);
+    assert.equal(noise.dims, dims);
+    noise.free();
+    // A noise built after the free may take the freed memory: the freed one still throws.
+    const other = new Perlin({ seed: 4, dims });
+    assert.throws(() => noise.sample(0.3, 0.7, 1.1, 1.9));
+    assert.throws(() => noise.fillGrid(new Float32Array(1), [0, 0, 0, 0].slice(0, dims),
+      [1, 1, 1, 1].slice(0, dims), [1, 1, 1, 1].slice(0, dims)));
+    other.free();
+  }
+});
