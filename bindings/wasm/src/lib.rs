@@ -15,7 +15,7 @@
 //! those of the C library's firmware builds and of `bandnoise-checks`.
 
 use bandnoise::batch::Grid;
-use bandnoise::lattice::{OriginalPerlin, Perlin, ValueNoise};
+use bandnoise::lattice::{OriginalPerlin, TabledPerlin, ValueNoise};
 use bandnoise::simplex::Simplex;
 use bandnoise::spec::{Base, I16Tiles, Spec, SpecNoise};
 use bandnoise::{Noise, NoiseGradient};
@@ -33,13 +33,20 @@ enum Built {
 
 /// A plain noise that a point sample reaches without the description's dispatch: a base whose
 /// only setting is its seed, with no sum, warp or period, built as the description builds it
-/// (the same values bit for bit: a test compares them). These kernels are short enough that
-/// the dispatch (`SpecNoise`'s nested `match`es, out of line in WebAssembly) is a sixth of a
-/// call in Chromium: 2.5 of 14.5 ns for 2D Perlin noise (`bench/README.md`). Grids take the
-/// batch kernels through the description, where the dispatch is once per grid row.
+/// (the same values bit for bit: a test compares them). Their kernels are short enough that
+/// the dispatch (`SpecNoise`'s nested `match`es, out of line in WebAssembly) is a large share
+/// of a call (`bench/README.md`). Grids take the batch kernels through the description, where
+/// the dispatch is once per grid row.
 #[derive(Clone, Debug)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one per noise, in the heap (wasm-bindgen boxes RawNoise); a box more would be a load more per sample"
+)]
 enum Direct {
-    Perlin(Perlin),
+    /// Perlin noise with its per-seed table (`TabledPerlin`: 16.5 KiB in the module's memory,
+    /// one dependent lookup fewer per sample), and sampled inline in the exported methods: the
+    /// common case of sampling point by point.
+    Perlin(Box<TabledPerlin>),
     OriginalPerlin(OriginalPerlin),
     Value(ValueNoise),
     Simplex(Simplex),
@@ -53,7 +60,7 @@ impl Direct {
         }
         let seed = spec.seed();
         Some(match spec.base() {
-            Base::Perlin => Direct::Perlin(Perlin::new(seed)),
+            Base::Perlin => Direct::Perlin(Box::new(TabledPerlin::new(seed))),
             Base::OriginalPerlin => Direct::OriginalPerlin(OriginalPerlin::new(seed)),
             Base::Value => Direct::Value(ValueNoise::new(seed)),
             Base::Simplex => Direct::Simplex(Simplex::new(seed)),
@@ -61,10 +68,11 @@ impl Direct {
         })
     }
 
+    /// The value at `p`.
     #[inline]
     fn sample<const D: usize>(&self, p: [f32; D]) -> f32
     where
-        Perlin: Noise<f32, D>,
+        TabledPerlin: Noise<f32, D>,
         OriginalPerlin: Noise<f32, D>,
         ValueNoise: Noise<f32, D>,
         Simplex: Noise<f32, D>,
@@ -149,8 +157,8 @@ impl RawNoise {
     /// method of the noise's dimension).
     pub fn sample1(&self, x: f32) -> f32 {
         match (&self.direct, &self.built) {
-            (Some(direct), Built::D1(_)) => direct.sample([x]),
-            (_, Built::D1(n)) => n.sample([x]),
+            (Some(Direct::Perlin(n)), Built::D1(_)) => n.sample([x]),
+            (_, Built::D1(n)) => self.sample_other(n, [x]),
             _ => f32::NAN,
         }
     }
@@ -158,8 +166,8 @@ impl RawNoise {
     /// The value at `(x, y)` of a 2D noise (`NaN` for another dimension).
     pub fn sample2(&self, x: f32, y: f32) -> f32 {
         match (&self.direct, &self.built) {
-            (Some(direct), Built::D2(_)) => direct.sample([x, y]),
-            (_, Built::D2(n)) => n.sample([x, y]),
+            (Some(Direct::Perlin(n)), Built::D2(_)) => n.sample([x, y]),
+            (_, Built::D2(n)) => self.sample_other(n, [x, y]),
             _ => f32::NAN,
         }
     }
@@ -167,8 +175,8 @@ impl RawNoise {
     /// The value at `(x, y, z)` of a 3D noise (`NaN` for another dimension).
     pub fn sample3(&self, x: f32, y: f32, z: f32) -> f32 {
         match (&self.direct, &self.built) {
-            (Some(direct), Built::D3(_)) => direct.sample([x, y, z]),
-            (_, Built::D3(n)) => n.sample([x, y, z]),
+            (Some(Direct::Perlin(n)), Built::D3(_)) => n.sample([x, y, z]),
+            (_, Built::D3(n)) => self.sample_other(n, [x, y, z]),
             _ => f32::NAN,
         }
     }
@@ -176,9 +184,27 @@ impl RawNoise {
     /// The value at `(x, y, z, w)` of a 4D noise (`NaN` for another dimension).
     pub fn sample4(&self, x: f32, y: f32, z: f32, w: f32) -> f32 {
         match (&self.direct, &self.built) {
-            (Some(direct), Built::D4(_)) => direct.sample([x, y, z, w]),
-            (_, Built::D4(n)) => n.sample([x, y, z, w]),
+            (Some(Direct::Perlin(n)), Built::D4(_)) => n.sample([x, y, z, w]),
+            (_, Built::D4(n)) => self.sample_other(n, [x, y, z, w]),
             _ => f32::NAN,
+        }
+    }
+
+    /// A point sample of any noise but Perlin's direct form (which the `sample` methods take
+    /// inline): out of line, so that the exported methods need no stack frame on their
+    /// common path (3 ns of a 15 ns call in Chromium, `bench/README.md`).
+    #[inline(never)]
+    fn sample_other<const D: usize>(&self, n: &SpecNoise<D, I16Tiles>, p: [f32; D]) -> f32
+    where
+        SpecNoise<D, I16Tiles>: Noise<f32, D>,
+        TabledPerlin: Noise<f32, D>,
+        OriginalPerlin: Noise<f32, D>,
+        ValueNoise: Noise<f32, D>,
+        Simplex: Noise<f32, D>,
+    {
+        match &self.direct {
+            Some(direct) => direct.sample(p),
+            None => n.sample(p),
         }
     }
 
