@@ -4,28 +4,18 @@
 // agree, filtering and infinite zoom do what they say, bad input shows a message and leaves the
 // page working, and the browser benchmark runs. Screenshots go to target/e2e/.
 // Prints "N passed, N failed" and exits non-zero on any failure.
-import { chromium } from 'playwright-core';
-import { spawn } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import assert from 'node:assert/strict';
+import { serve, launchChromium } from './harness.mjs';
 
 const PORT = 8123;
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const artifacts = `${root}target/e2e`;
 mkdirSync(artifacts, { recursive: true });
 
-const server = spawn('python3', ['-m', 'http.server', String(PORT), '--bind', '127.0.0.1', '--directory', `${root}web`], { stdio: 'ignore' });
-const base = `http://127.0.0.1:${PORT}`;
-for (let i = 0; ; i++) {
-  try { await fetch(`${base}/index.html`); break; } catch (e) { if (i > 50) throw e; await new Promise((r) => setTimeout(r, 100)); }
-}
-
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-    '--disable-sync', '--no-first-run', '--disable-quic'],
-});
+const { base, stop } = await serve(`${root}web`, PORT, 'index.html');
+const browser = await launchChromium();
 const page = await browser.newPage({ viewport: { width: 1300, height: 1250 } });
 const pageErrors = [];
 page.on('pageerror', (e) => pageErrors.push(String(e)));
@@ -340,7 +330,7 @@ await test('the browser benchmark runs against simplex-noise in the same Chromiu
 });
 
 await browser.close();
-server.kill();
+stop();
 const failed = results.filter(([, ok]) => !ok).length;
 console.log(`${results.length - failed} passed, ${failed} failed`);
 process.exit(failed ? 1 : 0);

@@ -5,24 +5,15 @@
 // its samples and throws Errors with the crate's message; prints the samples per second of 2D
 // Perlin noise (per call and by fillGrid) against simplex-noise in the same run (a measurement,
 // not a test: the machines are shared). Exits non-zero on any failure.
-import { chromium } from 'playwright-core';
-import { spawn } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import assert from 'node:assert/strict';
 import { parseChecks } from '../../bindings/wasm/tests/checks.mjs';
+import { serve, launchChromium } from './harness.mjs';
 
 const [app, checksPath] = process.argv.slice(2);
 const PORT = 8124;
-const server = spawn('python3', ['-m', 'http.server', String(PORT), '--bind', '127.0.0.1', '--directory', app], { stdio: 'ignore' });
-const base = `http://127.0.0.1:${PORT}`;
-for (let i = 0; ; i++) {
-  try { await fetch(`${base}/page.html`); break; } catch (e) { if (i > 50) throw e; await new Promise((r) => setTimeout(r, 100)); }
-}
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
-  args: ['--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-    '--disable-sync', '--no-first-run', '--disable-quic'],
-});
+const { base, stop } = await serve(app, PORT, 'page.html');
+const browser = await launchChromium();
 let failed = 0;
 try {
   const page = await browser.newPage();
@@ -74,7 +65,7 @@ try {
   await test('no page errors', async () => assert.deepEqual(errors, []));
 } finally {
   await browser.close();
-  server.kill();
+  stop();
 }
 console.log(failed ? `${failed} failed` : 'all passed');
 process.exit(failed ? 1 : 0);
