@@ -46,7 +46,7 @@ enum Direct {
     /// Perlin noise with its per-seed table (`TabledPerlin`: 16.5 KiB in the module's memory,
     /// one dependent lookup fewer per sample), and sampled inline in the exported methods: the
     /// common case of sampling point by point.
-    Perlin(Box<TabledPerlin>),
+    Perlin(TabledPerlin),
     OriginalPerlin(OriginalPerlin),
     Value(ValueNoise),
     Simplex(Simplex),
@@ -60,7 +60,7 @@ impl Direct {
         }
         let seed = spec.seed();
         Some(match spec.base() {
-            Base::Perlin => Direct::Perlin(Box::new(TabledPerlin::new(seed))),
+            Base::Perlin => Direct::Perlin(TabledPerlin::new(seed)),
             Base::OriginalPerlin => Direct::OriginalPerlin(OriginalPerlin::new(seed)),
             Base::Value => Direct::Value(ValueNoise::new(seed)),
             Base::Simplex => Direct::Simplex(Simplex::new(seed)),
