@@ -35,6 +35,7 @@ const LABELS = {
   cellular: 'cellular, F1 (Worley)',
   white: 'lattice white noise (Lewis)',
   'value-cubic': 'value noise, Catmull-Rom',
+  flow: 'flow (Perlin & Neyret; time turns it)',
 };
 
 function fillKinds() {

@@ -81,7 +81,7 @@ await test('every noise kind gives a different image', async () => {
   const hashes = new Map();
   // The page lists the noises the wasm module takes from bandnoise's description.
   const kinds = await page.evaluate(() => [...document.getElementById('kind').options].map((o) => o.value));
-  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener', 'gabor', 'simplex', 'cellular', 'white', 'value-cubic', 'opensimplex2', 'opensimplex2s', 'windy', 'wrinkled', 'marble', 'marble-olano', 'wood', 'wood-olano', 'polka-dots']);
+  assert.deepEqual(kinds, ['perlin', 'original', 'value', 'cnoise', 'mnoise', 'mnoise4093', 'wavelet', 'multiband', 'sparse', 'wiener', 'gabor', 'simplex', 'cellular', 'white', 'value-cubic', 'opensimplex2', 'opensimplex2s', 'flow', 'windy', 'wrinkled', 'marble', 'marble-olano', 'wood', 'wood-olano', 'polka-dots']);
   for (const kind of kinds) {
     await set('kind', kind);
     const s = await canvas('noise');
@@ -90,6 +90,30 @@ await test('every noise kind gives a different image', async () => {
     await page.screenshot({ path: `${artifacts}/demo-${kind}.png` });
   }
   assert.equal(new Set(hashes.values()).size, hashes.size, JSON.stringify([...hashes]));
+});
+
+await test('flow noise: time turns its gradients, a turn every 8 units; fBm and fixed point work', async () => {
+  await set('kind', 'flow');
+  const at = async (time) => { await set('time', time); assert.equal(await message(), ''); return (await canvas('noise')).hash; };
+  const start = await at('0');
+  assert.notEqual(await at('4'), start, 'half a turn later');
+  assert.equal(await at('8'), start, 'a whole turn later');
+  await set('fractal', 'fbm');
+  const s = await canvas('noise');
+  assert.ok(s.variance > 200, `fbm: variance ${s.variance}`);
+  assert.notEqual(s.hash, start);
+  await set('number', 'fixed');
+  assert.ok((await canvas('noise')).variance > 200);
+  await set('number', 'f32');
+  await set('warp', '0.5');
+  assert.match(await message(), /warp applies to noises with a 3D form, not flow/);
+  await set('warp', '0');
+  await tick('filtered', true);
+  assert.match(await message(), /not to flow noise/);
+  await tick('filtered', false);
+  await set('fractal', 'none');
+  await set('time', '0');
+  await set('kind', 'perlin');
 });
 
 await test('each wavelet tiling gives a different image', async () => {

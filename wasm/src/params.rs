@@ -1,23 +1,30 @@
 //! What the page asks for, checked, as a [`Spec`]: the noises the page offers are the
 //! description's bases ([`kinds`]), so a noise added to `bandnoise::spec` appears in the demo.
 
-use bandnoise::Error;
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::impulse::{Envelope, Kernel, Orientation};
+use bandnoise::simplex::{Flow, FlowSum};
 use bandnoise::spec::{Base, Spec, SpecNoise};
 use bandnoise::wavelet::{Bands, Distribution, Tiling};
 use bandnoise::wiener::Covariance;
+use bandnoise::{Error, Noise, Real};
 use wasm_bindgen::prelude::*;
 
 use crate::render::WebTiles;
 
+/// Whether the page shows `base`: every noise with a 3D form (the page's third axis is time),
+/// and flow noise (2D only: time turns its gradients).
+fn shown(base: Base) -> bool {
+    base.has_dimension(3) || base == Base::Flow
+}
+
 /// The names of the noises the demo can show, separated by spaces, in the description's
-/// order: every [`Base`] with a 3D form (the page's third axis is time). One string, not an
-/// array: wasm-bindgen's array of strings costs the module 1 KB.
+/// order: every [`Base`] with a 3D form and flow noise. One string, not an array:
+/// wasm-bindgen's array of strings costs the module 1 KB.
 #[wasm_bindgen]
 pub fn kinds() -> String {
     let mut names = String::new();
-    for base in Base::ALL.into_iter().filter(|b| b.has_dimension(3)) {
+    for base in Base::ALL.into_iter().filter(|&b| shown(b)) {
         if !names.is_empty() {
             names.push(' ');
         }
@@ -29,8 +36,86 @@ pub fn kinds() -> String {
 fn kind(name: &str) -> Result<Base, String> {
     Base::ALL
         .into_iter()
-        .find(|b| b.has_dimension(3) && b.name() == name)
+        .find(|&b| shown(b) && b.name() == name)
         .ok_or_else(|| format!("unknown noise kind \"{name}\" (see kinds())"))
+}
+
+/// Time units per turn of flow noise's gradients on the page (animating time adds 0.05 a
+/// frame: a turn in 160 frames).
+const FLOW_TIME_PER_TURN: f32 = 8.0;
+
+/// The noise a frame samples at `(x, y, time)`.
+#[derive(Clone, Debug)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one per frame's settings, built once"
+)]
+pub(crate) enum Sampled {
+    /// A noise with a 3D form: time is its third axis.
+    Solid(SpecNoise<3, WebTiles>),
+    /// Flow noise (Perlin and Neyret 2001), which has only a 2D form: time turns its
+    /// gradients, one turn every [`FLOW_TIME_PER_TURN`] units from the description's angle.
+    /// Built from the typed noises (the description's 2D dispatch would bring every 2D noise
+    /// into the module), as the description builds it.
+    Flow(Spec, FlowNoise),
+}
+
+/// Flow noise as the description builds it: plain, its own fBm (each octave turned further
+/// and advected), or a plain turbulence or ridged sum of one angle.
+#[derive(Clone, Debug)]
+#[allow(
+    clippy::large_enum_variant,
+    reason = "one per frame's settings, built once"
+)]
+pub(crate) enum FlowNoise {
+    Plain(Flow),
+    Fbm(FlowSum),
+    Sum(Fractal<Flow>),
+}
+
+impl Sampled {
+    /// The description the page asked for.
+    pub(crate) fn spec(&self) -> &Spec {
+        match self {
+            Sampled::Solid(n) => n.spec(),
+            Sampled::Flow(spec, _) => spec,
+        }
+    }
+}
+
+impl<R: Real> Noise<R, 3> for Sampled {
+    fn sample(&self, p: [R; 3]) -> R {
+        let q = [p[0], p[1]];
+        match self {
+            Sampled::Solid(n) => n.sample(p),
+            Sampled::Flow(_, FlowNoise::Plain(n)) => n.sample(q),
+            Sampled::Flow(_, FlowNoise::Fbm(n)) => n.sample(q),
+            Sampled::Flow(_, FlowNoise::Sum(n)) => n.sample(q),
+        }
+    }
+    fn amplitude_bound(&self) -> f32 {
+        match self {
+            Sampled::Solid(n) => Noise::<R, 3>::amplitude_bound(n),
+            Sampled::Flow(_, FlowNoise::Plain(n)) => Noise::<R, 2>::amplitude_bound(n),
+            Sampled::Flow(_, FlowNoise::Fbm(n)) => Noise::<R, 2>::amplitude_bound(n),
+            Sampled::Flow(_, FlowNoise::Sum(n)) => Noise::<R, 2>::amplitude_bound(n),
+        }
+    }
+}
+
+/// Flow noise at `time` as `spec` (with its sum, if any) describes it.
+fn flow_noise(spec: &Spec, time: f32) -> Result<FlowNoise, Error> {
+    let [angle, spin, advection] = spec.flow();
+    let flow = Flow::new(spec.seed()).with_angle(angle + time / FLOW_TIME_PER_TURN)?;
+    Ok(match spec.fractal() {
+        None => FlowNoise::Plain(flow),
+        Some((Kind::Fbm, octaves)) => FlowNoise::Fbm(
+            FlowSum::new(flow, octaves)
+                .with_spin(spin)?
+                .with_advection(advection)?,
+        ),
+        Some((kind, octaves)) => FlowNoise::Sum(Fractal::new(flow, octaves, kind)),
+    })
 }
 
 /// How a frame's samples are filtered by the pixel's footprint (`bandnoise::FilteredNoise`).
@@ -50,7 +135,7 @@ pub(crate) enum Filter {
 #[derive(Clone, Debug)]
 pub struct Params {
     /// The noise, its seed, period, bands and fractal sum, built once over the demo's tiles.
-    pub(crate) noise: SpecNoise<3, WebTiles>,
+    pub(crate) noise: Sampled,
     pub(crate) fixed: bool,
     pub(crate) zoom: f32,
     pub(crate) pan: [f32; 2],
@@ -150,8 +235,9 @@ fn describe(e: Error) -> String {
         Error::WarpedPeriod => {
             "a warped noise does not repeat: a warp and a period cannot be combined".into()
         }
-        // The page asks the core only for what is refused above (its kinds have a 3D form and
-        // its period has 3 axes, so building the spec in 3D is not refused).
+        // The page asks the core only for what is refused above (its kinds have a 3D form, or
+        // are flow noise, built in 2D; its period has 3 axes, so building the spec in 3D is
+        // not refused).
         _ => "invalid settings".into(),
     }
 }
@@ -385,6 +471,9 @@ impl Params {
                 .map_err(describe)?;
         }
         let warp = finite("warp", warp)?;
+        if warp != 0.0 && base == Base::Flow {
+            return Err("the warp applies to noises with a 3D form, not flow noise".into());
+        }
         if warp != 0.0 {
             spec = spec.with_warp(warp).map_err(describe)?;
         }
@@ -407,6 +496,9 @@ impl Params {
                  {base} alone"
             ));
         }
+        if filtered && base == Base::Flow {
+            return Err("filtering applies to wavelet and multiband noise and to fractal sums of noises with a 3D form, not to flow noise".into());
+        }
         if infinite && base != Base::Multiband {
             return Err(format!(
                 "infinite zoom applies to multiband noise, not {base}"
@@ -425,7 +517,11 @@ impl Params {
             _ => return Err(format!("palette must be grey or marble, not \"{palette}\"")),
         };
         Ok(Params {
-            noise: spec.build_with::<3, WebTiles>().map_err(describe)?,
+            noise: if base == Base::Flow {
+                Sampled::Flow(spec, flow_noise(&spec, time).map_err(describe)?)
+            } else {
+                Sampled::Solid(spec.build_with::<3, WebTiles>().map_err(describe)?)
+            },
             fixed,
             zoom,
             pan,
