@@ -192,7 +192,7 @@ impl RawNoise {
 
     /// A point sample of any noise but Perlin's direct form (which the `sample` methods take
     /// inline): out of line, so that the exported methods need no stack frame on their
-    /// common path (3 ns of a 15 ns call in Chromium, `bench/README.md`).
+    /// common path (about 1 ns of a 13 ns call in Chromium, `bench/README.md`).
     #[inline(never)]
     fn sample_other<const D: usize>(&self, n: &SpecNoise<D, I16Tiles>, p: [f32; D]) -> f32
     where
