@@ -124,6 +124,8 @@ impl<R: Real, const D: usize> Grid<R, D> {
     /// (rows are numbered with axis 1 fastest, as the grid's values are laid out). Its values
     /// are the full grid's row, bit for bit: its origin is the row's first point, except along
     /// axis 0, where it is the grid's. For filling a large grid a bounded buffer at a time.
+    /// Rows from [`rows`](Self::rows) on repeat the grid's rows (numbers are taken modulo
+    /// `rows()`); an empty grid's rows are empty.
     ///
     /// # Examples
     ///
@@ -152,7 +154,7 @@ impl<R: Real, const D: usize> Grid<R, D> {
             self.origin.first(),
             self.size.first(),
         ) {
-            (*o, *s) = (o0, s0);
+            (*o, *s) = (o0, if self.is_empty() { 0 } else { s0 });
         }
         Self {
             origin,

@@ -308,3 +308,24 @@ fn references_forward_the_batch_kernels() {
         .unwrap();
     assert!(out.iter().all(|&v| v == -42.0));
 }
+
+/// `Grid::row` past the last row repeats the rows (modulo `rows()`), and an empty grid's rows
+/// are empty, whichever axis is empty.
+#[test]
+fn rows_past_the_last_repeat_and_empty_grids_have_empty_rows() {
+    let grid = Grid::new([0.37f32, -0.61, 2.3], [0.0731, 0.113, -0.29], [7, 5, 3]);
+    assert_eq!(grid.rows(), 15);
+    for r in 0..15 {
+        let (a, b) = (grid.row(r), grid.row(r + 15));
+        assert_eq!((a.origin, a.step, a.size), (b.origin, b.step, b.size));
+        assert_eq!(a.size, [7, 1, 1]);
+    }
+    for size in [[0, 5, 3], [7, 0, 3], [7, 5, 0]] {
+        let empty = Grid::new([0.37f32, -0.61, 2.3], [0.0731, 0.113, -0.29], size);
+        assert_eq!(empty.rows(), 0);
+        assert!(
+            empty.row(0).is_empty() && empty.row(4).is_empty(),
+            "{size:?}"
+        );
+    }
+}

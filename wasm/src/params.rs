@@ -540,3 +540,40 @@ impl Params {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{FLOW_TIME_PER_TURN, flow_noise};
+    use bandnoise::Noise;
+    use bandnoise::spec::Spec;
+
+    /// The page builds flow noise from the typed noises rather than the description (see
+    /// [`super::Sampled::Flow`]); at each time it is the description's 2D noise with the
+    /// angle turned by `time / 8`, bit for bit, plain and with each sum.
+    #[test]
+    fn flow_noise_is_the_description_turned_by_time() {
+        for text in [
+            "flow seed=5 angle=0.1",
+            "flow seed=5 angle=0.1 fbm octaves=4 spin=1.5 advection=0.3",
+            "flow seed=5 turbulence octaves=3",
+            "flow seed=5 ridged octaves=2",
+        ] {
+            let spec: Spec = text.parse().unwrap();
+            for time in [0.0f32, 1.3, -7.9, 100.0] {
+                let page = flow_noise(&spec, time).unwrap();
+                let turned = spec
+                    .with_angle(spec.flow()[0] + time / FLOW_TIME_PER_TURN)
+                    .unwrap()
+                    .build::<2>()
+                    .unwrap();
+                for k in 0..400 {
+                    let p = [k as f32 * 0.173 - 31.0, (k * 7 % 41) as f32 * 0.291 - 5.0];
+                    let q = [p[0], p[1], time];
+                    let got: f32 = super::Sampled::Flow(spec, page.clone()).sample(q);
+                    let want: f32 = turned.sample(p);
+                    assert_eq!(got.to_bits(), want.to_bits(), "{text} at {time}: {p:?}");
+                }
+            }
+        }
+    }
+}
