@@ -7,7 +7,8 @@ use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::prelude::*;
 use bandnoise::wavelet::{
-    Bands, Distribution, Multiband, TILE2, TILE3, TILE3_I16, Tiling, Wavelet,
+    Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, TileData, Tiling,
+    Wavelet,
 };
 use bandnoise_tests::{AllTypes, Lattice, Rng};
 
@@ -220,6 +221,71 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
     check_all_types::<3, _>("multiband", &multi, &mut rng);
     let fbm = Fractal::fbm(Wavelet::new(4, &TILE2), Octaves::default());
     check::<f32, 2, _>("fractal wavelet", &fbm, &mut rng);
+}
+
+/// Grids whose rows cross wavelet block borders and corners (blocks `n` coefficients wide):
+/// rows in blend zones along y and z, x running over a border, backwards, standing still, and
+/// in strides longer than a row's column cache (`band/row.rs`), against `sample`.
+fn check_rows<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, n: f32) {
+    for (y0, z0) in [(n - 5.3, n - 5.1), (-n - 4.9, 2.6), (3.4, -n + 3.3)] {
+        for (x0, step) in [
+            (n - 9.7, 0.37f32),
+            (n + 9.1, -0.29),
+            (n - 3.2, 0.0),
+            (-n - 8.8, 1.3),
+            (2.0 * n - 60.0, 11.7),
+            (n - 0.6, 0.013),
+        ] {
+            let origin: [R; D] = core::array::from_fn(|a| R::from_f32([x0, y0, z0][a]));
+            let steps: [R; D] = core::array::from_fn(|a| R::from_f32([step, 0.25, 0.5][a]));
+            let size: [usize; D] = core::array::from_fn(|a| [77, 44, 22][a]);
+            let grid = Grid::new(origin, steps, size);
+            let mut out = vec![R::ZERO; grid.len()];
+            noise.fill_grid(&grid, &mut out).unwrap();
+            for (k, v) in out.iter().enumerate() {
+                let index: [usize; D] =
+                    core::array::from_fn(|a| [k % 77, k / 77 % 44, k / 77 / 44][a]);
+                let p = grid.point(index);
+                assert_eq!(bits(*v), bits(noise.sample(p)), "{name} {D}D row at {p:?}");
+            }
+        }
+    }
+}
+
+/// [`check_rows`] for a band in each tiling.
+fn check_band_rows<R: Real, const D: usize, T: TileData<D> + 'static>(
+    name: &str,
+    band: Wavelet<'static, T>,
+) where
+    Wavelet<'static, T>: Noise<R, D>,
+{
+    for tiling in [Tiling::Blended, Tiling::Varied, Tiling::Periodic] {
+        let name = format!("{name} {tiling:?}");
+        check_rows::<R, D, _>(&name, &band.with_tiling(tiling), T::SIZE as f32);
+    }
+}
+
+#[test]
+fn wavelet_rows_across_block_corners_equal_point_evaluation() {
+    check_band_rows::<f32, 2, _>("f32", Wavelet::new(3, &TILE2));
+    check_band_rows::<f64, 2, _>("f64", Wavelet::new(4, &TILE2));
+    check_band_rows::<I16F16, 2, _>("I16F16", Wavelet::new(5, &TILE2_I16));
+    check_band_rows::<f32, 3, _>("f32", Wavelet::new(3, &TILE3));
+    check_band_rows::<I16F16, 3, _>("I16F16", Wavelet::new(6, &TILE3_I16));
+    // A tile too small for blend zones (11 coefficients or fewer: shifted blocks abut).
+    static SMALL: Tile2<8> = Tile2::generate(2);
+    check_band_rows::<f32, 2, _>("small tile", Wavelet::new(1, &SMALL));
+    // Multiband noise: every band's row through the band's kernel, summed in `sample`'s order;
+    // bands finer and coarser than the grid, both distributions.
+    let bands = Bands::new(-2, &[0.3, 0.0, 1.0, 0.5, 0.25, 0.7]).unwrap();
+    for distribution in [Distribution::Gaussian, Distribution::Uniform] {
+        let m2 = Multiband::new(2, &TILE2, bands, distribution);
+        check_rows::<f32, 2, _>("multiband", &m2, 16.0);
+        check_rows::<I16F16, 2, _>("multiband", &m2, 16.0);
+        let m3 = Multiband::new(3, &TILE3_I16, bands, distribution);
+        check_rows::<f32, 3, _>("multiband", &m3, 8.0);
+        check_rows::<f64, 3, _>("multiband", &m3, 8.0);
+    }
 }
 
 #[test]

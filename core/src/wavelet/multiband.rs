@@ -21,6 +21,7 @@
 
 use heapless::Vec;
 
+use crate::batch::{Grid, check_len};
 use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet};
@@ -333,17 +334,8 @@ impl<'t, T> Multiband<'t, T> {
             if w == 0.0 {
                 continue;
             }
-            let e = band + 1;
-            let scale = if e >= 0 {
-                R::from_i32(1 << e.min(30))
-            } else {
-                R::from_ratio(1, (-e) as u32)
-            };
-            let q: [R; D] = core::array::from_fn(|a| {
-                p[a].wrapping_mul(scale)
-                    .finite_or_zero()
-                    .saturating_add(R::from_ratio(band_offset(self.band.seed(), band, a), 16))
-            });
+            let (scale, to_band) = self.band_map::<R>(band);
+            let q: [R; D] = core::array::from_fn(|a| to_band(p[a], a));
             let weight = R::from_f32(w);
             let (v, g) = f(band, q);
             sum = sum.saturating_add(weight.mul_rn(v));
@@ -351,16 +343,43 @@ impl<'t, T> Multiband<'t, T> {
                 *ga = ga.saturating_add(weight.mul_rn(gb).saturating_mul(scale));
             }
         }
+        let (value, chain) = self.finish(sum);
+        let gradient = match chain {
+            None => gradient.map(R::canonical),
+            Some(chain) => gradient.map(|g| g.saturating_mul(chain).canonical()),
+        };
+        (value, gradient)
+    }
+
+    /// Band `band`'s scale `2^(band+1)` and the map of a coordinate along an axis into the
+    /// band: scaled, then offset by the band's translation (footnote 1).
+    #[inline]
+    fn band_map<R: Real>(&self, band: i32) -> (R, impl Fn(R, usize) -> R) {
+        let e = band + 1;
+        let scale = if e >= 0 {
+            R::from_i32(1 << e.min(30))
+        } else {
+            R::from_ratio(1, (-e) as u32)
+        };
+        let seed = self.band.seed();
+        let map = move |x: R, a: usize| {
+            x.wrapping_mul(scale)
+                .finite_or_zero()
+                .saturating_add(R::from_ratio(band_offset(seed, band, a), 16))
+        };
+        (scale, map)
+    }
+
+    /// The value from the weighted sum of the bands, and for the uniform distribution the
+    /// derivative of its remapping (which the gradient is multiplied by).
+    #[inline]
+    fn finish<R: Real>(&self, sum: R) -> (R, Option<R>) {
         match self.distribution {
-            Distribution::Gaussian => (sum.canonical(), gradient.map(R::canonical)),
+            Distribution::Gaussian => (sum.canonical(), None),
             Distribution::Uniform => {
                 let c = R::from_f32(core::f32::consts::FRAC_1_SQRT_2);
                 let (u, du) = erf_with_derivative(sum.mul_rn(c));
-                let chain = du.mul_rn(c);
-                (
-                    u.canonical(),
-                    gradient.map(|g| g.saturating_mul(chain).canonical()),
-                )
+                (u.canonical(), Some(du.mul_rn(c)))
             }
         }
     }
@@ -592,6 +611,40 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         self.sum(p, D - 2, |q| self.band.sample(q))
+    }
+
+    /// Row by row, band by band: each band's row through the band's row kernel (its shared
+    /// coefficients fetched once), its weighted value added to the row in `sample`'s order,
+    /// then each value finished as `sample` does.
+    fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
+        check_len(grid.len(), out.len())?;
+        let row_len = grid.size[0];
+        if row_len == 0 || grid.is_empty() {
+            return Ok(());
+        }
+        let first = self.bands.first;
+        for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
+            let start = grid.row_start(row);
+            row_out.fill(R::ZERO);
+            for (i, w) in self.scaled.iter().enumerate() {
+                let (band, w) = (first + i as i32, w[D - 2]);
+                if w == 0.0 {
+                    continue;
+                }
+                let (_, to_band) = self.band_map::<R>(band);
+                let weight = R::from_f32(w);
+                self.band.fill_row(
+                    core::array::from_fn(|a| to_band(start[a], a)),
+                    |i| to_band(grid.coordinate(0, i), 0),
+                    row_out,
+                    |sum, v| *sum = sum.saturating_add(weight.mul_rn(v)),
+                );
+            }
+            for v in row_out.iter_mut() {
+                *v = self.finish(*v).0;
+            }
+        }
+        Ok(())
     }
 
     /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the largest

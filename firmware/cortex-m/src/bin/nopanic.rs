@@ -158,6 +158,19 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
             .1[1]);
         add(m.sample_filtered([p[0], p[1], p[2]], [p[3], p[0], p[1]], [p[1], p[2], p[3]]));
         add(m.sample_infinite([p[0], p[1], p[2]], p[3]));
+        // Grid rows of a band and of multiband noise (`band/row.rs`: the column cache).
+        let grid3 = Grid::new(
+            [p[0], p[1], p[2]],
+            [p[3], p[2], p[1]],
+            black_box([10, 3, 2]),
+        );
+        let mut out = [R::ZERO; 60];
+        if w3.fill_grid(&grid3, &mut out).is_ok() {
+            add(out.get(black_box(23)).copied().unwrap_or(R::ZERO));
+        }
+        if m.fill_grid(&grid3, &mut out).is_ok() {
+            add(out.get(black_box(41)).copied().unwrap_or(R::ZERO));
+        }
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
@@ -193,6 +206,10 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
     let mut out = [R::ZERO; 60];
     if Perlin::new(5).fill_grid(&grid, &mut out).is_ok() {
         add(out.get(black_box(17)).copied().unwrap_or(R::ZERO));
+    }
+    let w2 = Wavelet::new(3, &TILE2_I16).with_tiling(black_box(Tiling::Blended));
+    if w2.fill_grid(&grid, &mut out).is_ok() {
+        add(out.get(black_box(19)).copied().unwrap_or(R::ZERO));
     }
     // Sparse convolution noise in batches (the shared walk of a chunk's cells), with any
     // density and fixed count.

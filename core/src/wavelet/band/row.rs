@@ -1,0 +1,335 @@
+//! One row of a grid through a wavelet band, bit for bit as [`Wavelet::evaluate`] samples each
+//! point, with the coefficient fetches the row's samples share done once.
+//!
+//! Along a row only x changes, so every sample reads the same three coefficient indices along
+//! y (and z), in the same blocks, with the same weights; neighbouring samples read mostly the
+//! same indices along x. A sample's sum is `evaluate`'s (block by block, rows along x, then
+//! planes along y, then z, with the same saturating operations), but the 3 (3D: 9) tile
+//! coefficients at one x index of one block, for every block the row's y and z reach, are
+//! fetched once into a small cache of such columns, and each block's placement once into a
+//! cache of blocks. Fetching a coefficient (a placement hash, the block's cyclic shift and
+//! orientation per axis, a remainder) is most of a point sample's cost under
+//! [`Tiling::Blended`](super::Tiling::Blended); the row pays it once per column and block.
+//!
+//! Both caches are fixed arrays on the stack (about 2.4 KB for `f32` in 3D): no allocation, and
+//! any order of x values is correct (a grid with a negative or zero step, or one that jumps
+//! between blocks), only slower when x moves by more than the cache holds.
+
+use super::{Placement, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, members};
+use crate::Real;
+
+/// Columns held: consecutive samples of a row read three consecutive x indices, in at most two
+/// blocks; 8 x indices × 2 blocks is more than a row ever needs at once.
+const SLOTS: usize = 16;
+
+/// Blocks along x held (keyed by the block's parity: a sample's coefficients reach at most two
+/// neighbouring blocks).
+const BLOCKS: usize = 2;
+
+/// One block along x: for each subset `s` of the row's crossing y/z axes (bit 0: y reads the
+/// next block, bit 1: z), the placement's x-axis map and the y/z parts of the tile index of
+/// the row's 3 × 3 coefficients.
+#[derive(Clone, Copy)]
+struct Block<const D: usize> {
+    key: Option<i32>,
+    places: [Option<Placement<D>>; 4],
+    base: [[[usize; 3]; 3]; 4],
+}
+
+/// The tile coefficients at one x index of one block along x: `values[s][jy][jz]` for each
+/// subset `s` of the crossing y/z axes and the row's y and z coefficients.
+#[derive(Clone, Copy)]
+struct Column<R> {
+    key: Option<(i32, i32)>,
+    values: [[[R; 3]; 3]; 4],
+}
+
+/// What the samples of a row with the same first x coefficient share ([`Wavelet::span_setup`]).
+struct Span<R> {
+    first: Option<i32>,
+    /// Whether their coefficients reach a second block along x.
+    two: bool,
+    /// With `two`: the factor of each x weight in the first block (`[0]`) and the next:
+    /// `sided`'s blend weight, 0 for a coefficient outside the block.
+    factors: [[R; 3]; 2],
+    /// How many entries of `blocks` are used.
+    count: usize,
+    /// The blocks to sum, in `block_sums`'s order: the x side (0 or 1), the subset of
+    /// crossing y/z axes (bit 0: y in the next block, bit 1: z), the three columns' slots.
+    blocks: [(usize, usize, [usize; 3]); 8],
+}
+
+/// What stays fixed along a row: its y/z blocks, local indices, crossing axes and weights.
+struct Row<R, const D: usize> {
+    /// The first block along each axis (x unused).
+    block: [i32; D],
+    /// The local index (plus nothing: in `[h, n + h)`) of the first coefficient along each
+    /// axis (x unused).
+    local0: [usize; D],
+    /// Bits 1.. : the y/z axes whose coefficients reach a second block.
+    crossing: usize,
+    /// Each axis's weights in the first block (`[0]`) and the next (`[1]`), blended where the
+    /// axis crosses, 0 for a coefficient outside the block's reach (x unused).
+    sides: [[[[R; 1]; 3]; D]; 2],
+}
+
+/// Sets to 0 the weight of each coefficient outside its block's reach (`bits`, as
+/// [`members`] gives them per block).
+///
+/// `evaluate` skips such a coefficient; a zero weight adds `±0` instead, which leaves the sum's
+/// bits as they are: every sum starts at `+0`, and adding anything to `+0` never gives `−0`
+/// (`+0 + −0 = +0`), so a sum is never `−0` and adding `±0` to it changes nothing (fixed point:
+/// adding 0 is exact). The coefficients it multiplies are the tile's, finite.
+#[inline]
+fn exclude<R: Real>(axis: &mut [[[R; 1]; 3]; 2], bits: [u8; 2]) {
+    for (side, bits) in axis.iter_mut().zip(bits) {
+        for (j, w) in side.iter_mut().enumerate() {
+            if bits >> j & 1 == 0 {
+                *w = [R::ZERO];
+            }
+        }
+    }
+}
+
+impl<T> Wavelet<'_, T> {
+    /// Writes, through `put`, the band at `(x(i), rest[1], …)` into `out[i]` for every `i`: bit
+    /// for bit `evaluate` at each point (`rest[0]` is ignored).
+    #[inline]
+    pub(crate) fn fill_row<R: Real, const D: usize>(
+        &self,
+        rest: [R; D],
+        x: impl Fn(usize) -> R,
+        out: &mut [R],
+        put: impl Fn(&mut R, R),
+    ) where
+        T: TileData<D>,
+    {
+        const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
+        let (n, h) = (T::SIZE, self.half_width::<D>());
+        let row = self.row_setup(&rest, n, h);
+        let mut blocks = [Block::<D> {
+            key: None,
+            places: [None; 4],
+            base: [[[0; 3]; 3]; 4],
+        }; BLOCKS];
+        let mut columns = [Column {
+            key: None,
+            values: [[[R::ZERO; 3]; 3]; 4],
+        }; SLOTS];
+        let planes = if D == 3 { 3 } else { 1 };
+        let mut span = Span::<R> {
+            first: None,
+            two: false,
+            factors: [[R::ONE; 3]; 2],
+            count: 0,
+            blocks: [(0, 0, [0; 3]); 8],
+        };
+        for (i, o) in out.iter_mut().enumerate() {
+            let (first, weights) = bspline3(x(i));
+            if span.first != Some(first) {
+                span = self.span_setup(&row, first, &mut blocks, &mut columns, n, h);
+            }
+            // The x weights in each block: `evaluate`'s (`sided`), with the coefficients
+            // outside a block weighing 0 (`exclude`).
+            let xs: [[R; 3]; 2] = if span.two {
+                // Factors are in [0, 1]: `mul_fraction` is exact for 0 and 1.
+                span.factors
+                    .map(|f| core::array::from_fn(|j| weights[j].mul_fraction(f[j])))
+            } else {
+                [weights; 2]
+            };
+            let mut sum = R::ZERO;
+            for &(mx, s, slots) in span.blocks.iter().take(span.count) {
+                let cols = slots.map(|k| &columns[k % SLOTS].values[s & 3]);
+                let wx = &xs[mx & 1];
+                let wy = &row.sides[s & 1][1];
+                let wz = &row.sides[s >> (D - 2) & 1][D - 1];
+                for jz in 0..planes {
+                    let mut plane = R::ZERO;
+                    for (jy, wy) in wy.iter().enumerate() {
+                        let mut line = R::ZERO;
+                        for (col, &wx) in cols.iter().zip(wx) {
+                            line = line.saturating_add(wx.mul_fraction(col[jy][jz]));
+                        }
+                        plane = plane.saturating_add(wy[0].mul_fraction(line));
+                    }
+                    sum = sum.saturating_add(if D == 3 {
+                        wz[jz][0].mul_fraction(plane)
+                    } else {
+                        plane
+                    });
+                }
+            }
+            put(o, sum.canonical());
+        }
+    }
+
+    /// What the samples whose first x coefficient is `first` share: whether they reach a
+    /// second block along x, their x weights' factors in each block, and the blocks they sum
+    /// (every subset of the crossing axes, largest first, as `block_sums`), each with the cache
+    /// slots of its three columns, fetched here if missing.
+    #[inline]
+    fn span_setup<R: Real, const D: usize>(
+        &self,
+        row: &Row<R, D>,
+        first: i32,
+        blocks: &mut [Block<D>; BLOCKS],
+        columns: &mut [Column<R>; SLOTS],
+        n: usize,
+        h: usize,
+    ) -> Span<R>
+    where
+        T: TileData<D>,
+    {
+        let (bx, l0, two) = axis_span(first, n, h);
+        let mut span = Span {
+            first: Some(first),
+            two,
+            factors: [[R::ONE; 3]; 2],
+            count: 0,
+            blocks: [(0, 0, [0; 3]); 8],
+        };
+        if two {
+            // `sided`'s blend weights (1 where blocks abut), and 0 outside each block.
+            let bits = members(1, [l0], n, h);
+            for (side, factors) in span.factors.iter_mut().enumerate() {
+                for (j, f) in factors.iter_mut().enumerate() {
+                    *f = if bits[side][0] >> j & 1 == 0 {
+                        R::ZERO
+                    } else if h > 0 {
+                        blend_weight(l0 + j + n - side * n, n, h)
+                    } else {
+                        R::ONE
+                    };
+                }
+            }
+        }
+        let crossing = row.crossing | two as usize;
+        for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
+            let mx = m & 1;
+            let b = bx.wrapping_add(mx as i32);
+            let mut slots = [0; 3];
+            for (jx, slot) in slots.iter_mut().enumerate() {
+                let g = first.wrapping_add(jx as i32);
+                // Distinct for the three x indices and two blocks of one span.
+                *slot = (((g as u32 as usize) % (SLOTS / 2)) * 2 + (b & 1) as usize) % SLOTS;
+                let entry = &mut columns[*slot];
+                if entry.key != Some((g, b)) {
+                    let block = &mut blocks[(b & 1) as usize % BLOCKS];
+                    if block.key != Some(b) {
+                        *block = self.block_setup(row, b, n);
+                    }
+                    self.column_fill(row, block, l0 + jx + n - n * mx, entry, n);
+                    entry.key = Some((g, b));
+                }
+            }
+            if let Some(entry) = span.blocks.get_mut(span.count) {
+                *entry = (mx, (m >> 1) & 3, slots);
+                span.count += 1;
+            }
+        }
+        span
+    }
+
+    /// The row's y/z blocks, local indices, crossing axes, weights and members.
+    #[inline]
+    fn row_setup<R: Real, const D: usize>(&self, rest: &[R; D], n: usize, h: usize) -> Row<R, D>
+    where
+        T: TileData<D>,
+    {
+        let mut row = Row {
+            block: [0; D],
+            local0: [0; D],
+            crossing: 0,
+            sides: [[[[R::ZERO]; 3]; D]; 2],
+        };
+        let axes = rest.iter().zip(row.block.iter_mut().zip(&mut row.local0));
+        for (a, (&coordinate, (block, local0))) in axes.enumerate().skip(1) {
+            let (first, weights) = bspline3(coordinate);
+            let (b, l0, two) = axis_span(first, n, h);
+            (*block, *local0) = (b, l0);
+            row.crossing |= (two as usize) << a;
+            // `sided`'s weights, 0 outside each block (`exclude`).
+            let mut axis = [weights.map(|w| [w]); 2];
+            if two {
+                if h > 0 {
+                    for (s, side) in axis.iter_mut().enumerate() {
+                        blend_axis(side, l0 + n - s * n, n, h);
+                    }
+                }
+                exclude(&mut axis, members(1, [l0], n, h).map(|[bits]| bits));
+            }
+            for (side, weights) in row.sides.iter_mut().zip(axis) {
+                if let Some(w) = side.get_mut(a) {
+                    *w = weights;
+                }
+            }
+        }
+        row
+    }
+
+    /// Block `b` along x: for each subset of the row's crossing y/z axes, the placement of the
+    /// block it names and the y/z parts of the tile index of the row's coefficients in it.
+    #[inline(never)]
+    fn block_setup<R: Real, const D: usize>(&self, row: &Row<R, D>, b: i32, n: usize) -> Block<D>
+    where
+        T: TileData<D>,
+    {
+        let mut block = Block {
+            key: Some(b),
+            places: [None; 4],
+            base: [[[0; 3]; 3]; 4],
+        };
+        let yz = row.crossing >> 1;
+        for s in (0..4usize).filter(|s| s & !yz == 0) {
+            let mut at = row.block;
+            at[0] = b;
+            for (a, at) in at.iter_mut().enumerate().skip(1) {
+                *at = at.wrapping_add((s >> (a - 1) & 1) as i32);
+            }
+            let place = self.placement(at);
+            for jy in 0..3 {
+                for jz in 0..if D == 3 { 3 } else { 1 } {
+                    let mut offset = 0;
+                    for (a, j) in [(1, jy), (2, jz)] {
+                        if a < D {
+                            // The local index in its block plus n: local0 + j − n·side + n.
+                            let side = s >> (a - 1) & 1;
+                            let l_plus_n = row.local0[a] + j + n - n * side;
+                            offset += place.axis(a, n).offset(l_plus_n, n);
+                        }
+                    }
+                    block.base[s & 3][jy][jz] = offset;
+                }
+            }
+            block.places[s & 3] = Some(place);
+        }
+        block
+    }
+
+    /// Fetches the column at local x index `l_plus_n − n` of `block` into `entry`.
+    #[inline]
+    fn column_fill<R: Real, const D: usize>(
+        &self,
+        row: &Row<R, D>,
+        block: &Block<D>,
+        l_plus_n: usize,
+        entry: &mut Column<R>,
+        n: usize,
+    ) where
+        T: TileData<D>,
+    {
+        let yz = row.crossing >> 1;
+        for s in (0..4usize).filter(|s| s & !yz == 0) {
+            if let Some(place) = &block.places[s & 3] {
+                let x = place.axis(0, n).offset(l_plus_n, n);
+                for (values, base) in entry.values[s & 3].iter_mut().zip(&block.base[s & 3]) {
+                    let planes = if D == 3 { 3 } else { 1 };
+                    for (v, &b) in values.iter_mut().zip(base).take(planes) {
+                        *v = self.tile.flat(x + b);
+                    }
+                }
+            }
+        }
+    }
+}
