@@ -18,7 +18,7 @@ use bandnoise::lattice::{
     CubicValueNoise, MNoise, MixedMNoise, MixedTurbulence, Perlin, TabledPerlin, ValueNoise,
 };
 use bandnoise::simplex::{Flow, OpenSimplex2, OpenSimplex2S, Simplex};
-use bandnoise::wavelet::{TILE2, TILE3, Wavelet};
+use bandnoise::wavelet::{Multiband, TILE2, TILE3, Wavelet};
 use bandnoise::{Noise, ProjectedNoise};
 
 /// Samples per row (and rows in the timed grid).
@@ -63,7 +63,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 31] = [
+pub const FUNCTIONS: [&str; 32] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -84,6 +84,7 @@ pub const FUNCTIONS: [&str; 31] = [
     "wavelet-3d",
     "wavelet-projected-axis",
     "wavelet-projected-oblique",
+    "multiband-2d",
     "fbm6-perlin-3d",
     "sparse-2d",
     "sparse-3d",
@@ -228,6 +229,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
     let turbulence = || Fractal::turbulence(MNoise::new(0), Octaves::new(4, 2.0, 0.5).unwrap());
     // The speed goal's configuration: 3 impulses in every cell (Peachey's count).
     let sparse3 = || SparseConvolution::<3>::new(0).with_fixed_count(3).unwrap();
+    // The default bands (0–4, weights halving) over the default 2D tile and tiling.
+    let multiband = || Multiband::new(0, &TILE2, Default::default(), Default::default());
     let l = layout;
     let run: Run = match (function, implementation) {
         ("perlin-2d", "bandnoise") => l.point::<_, 2>(Perlin::new(0)),
@@ -270,6 +273,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("wavelet-projected-oblique", "bandnoise") => {
             l.projected(Wavelet::new(0, &TILE3), [0.48, 0.6, 0.64])
         }
+        ("multiband-2d", "bandnoise") => l.point::<_, 2>(multiband()),
+        ("multiband-2d", "bandnoise-batch") => l.batch::<_, 2>(multiband()),
         ("fbm6-perlin-3d", "bandnoise") => l.point::<_, 3>(fbm()),
         ("fbm6-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(fbm()),
         ("sparse-2d", "bandnoise") => l.point::<_, 2>(SparseConvolution::<2>::new(0)),
@@ -465,7 +470,9 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
 #[must_use]
 pub fn peer_function(function: &str) -> &str {
     match function {
-        "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "sparse-2d" => "perlin-2d",
+        "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "multiband-2d" | "sparse-2d" => {
+            "perlin-2d"
+        }
         "mnoise-4d" | "mixed-mnoise-4d" => "perlin-4d",
         "flow-2d" => "simplex-2d",
         "tabled-perlin-3d"

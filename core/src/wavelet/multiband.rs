@@ -334,7 +334,7 @@ impl<'t, T> Multiband<'t, T> {
             if w == 0.0 {
                 continue;
             }
-            let (scale, to_band) = self.band_map::<R>(band);
+            let (scale, to_band) = self.band_map::<R, D>(band);
             let q: [R; D] = core::array::from_fn(|a| to_band(p[a], a));
             let weight = R::from_f32(w);
             let (v, g) = f(band, q);
@@ -354,7 +354,7 @@ impl<'t, T> Multiband<'t, T> {
     /// Band `band`'s scale `2^(band+1)` and the map of a coordinate along an axis into the
     /// band: scaled, then offset by the band's translation (footnote 1).
     #[inline]
-    fn band_map<R: Real>(&self, band: i32) -> (R, impl Fn(R, usize) -> R) {
+    fn band_map<R: Real, const D: usize>(&self, band: i32) -> (R, impl Fn(R, usize) -> R) {
         let e = band + 1;
         let scale = if e >= 0 {
             R::from_i32(1 << e.min(30))
@@ -362,10 +362,13 @@ impl<'t, T> Multiband<'t, T> {
             R::from_ratio(1, (-e) as u32)
         };
         let seed = self.band.seed();
+        let offsets: [R; D] =
+            core::array::from_fn(|a| R::from_ratio(band_offset(seed, band, a), 16));
         let map = move |x: R, a: usize| {
+            let offset = offsets.get(a).copied().unwrap_or(R::ZERO);
             x.wrapping_mul(scale)
                 .finite_or_zero()
-                .saturating_add(R::from_ratio(band_offset(seed, band, a), 16))
+                .saturating_add(offset)
         };
         (scale, map)
     }
@@ -631,7 +634,7 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
                 if w == 0.0 {
                     continue;
                 }
-                let (_, to_band) = self.band_map::<R>(band);
+                let (_, to_band) = self.band_map::<R, D>(band);
                 let weight = R::from_f32(w);
                 self.band.fill_row(
                     core::array::from_fn(|a| to_band(start[a], a)),

@@ -15,7 +15,7 @@
 //! any order of x values is correct (a grid with a negative or zero step, or one that jumps
 //! between blocks), only slower when x moves by more than the cache holds.
 
-use super::{Placement, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, members};
+use super::{AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, members};
 use crate::Real;
 
 /// Columns held: consecutive samples of a row read three consecutive x indices, in at most two
@@ -27,24 +27,35 @@ const SLOTS: usize = 16;
 const BLOCKS: usize = 2;
 
 /// One block along x: for each subset `s` of the row's crossing y/z axes (bit 0: y reads the
-/// next block, bit 1: z), the placement's x-axis map and the y/z parts of the tile index of
-/// the row's 3 × 3 coefficients.
+/// next block, bit 1: z), how the block it names reads x, and the y/z parts of the tile index
+/// of the row's 3 × 3 coefficients (`base[s][jy][jz]`).
 #[derive(Clone, Copy)]
-struct Block<const D: usize> {
+struct Block {
     key: Option<i32>,
-    places: [Option<Placement<D>>; 4],
+    x: [AxisMap; 4],
     base: [[[usize; 3]; 3]; 4],
 }
 
-/// The tile coefficients at one x index of one block along x: `values[s][jy][jz]` for each
-/// subset `s` of the crossing y/z axes and the row's y and z coefficients.
-#[derive(Clone, Copy)]
-struct Column<R> {
-    key: Option<(i32, i32)>,
-    values: [[[R; 3]; 3]; 4],
+/// The column cache: slot `k` holds the tile coefficients at one x index of one block along x
+/// (`keys[k]`), `values[4k + s][jy][jz]` for each subset `s` of the crossing y/z axes and the
+/// row's y and z coefficients.
+struct Columns<R> {
+    /// `key(g, b)` of the column each slot holds; initially keys that map to other slots, so
+    /// no lookup matches them.
+    keys: [u64; SLOTS],
+    values: [[[R; 3]; 3]; 4 * SLOTS],
 }
 
-/// What the samples of a row with the same first x coefficient share ([`Wavelet::span_setup`]).
+/// The slot of x index `g` in block `b` (distinct for the three x indices and two blocks of
+/// one span), and its key.
+#[inline]
+fn slot(g: i32, b: i32) -> (usize, u64) {
+    let slot = ((g as u32 as usize % (SLOTS / 2)) * 2 + (b & 1) as usize) % SLOTS;
+    (slot, (g as u32 as u64) << 32 | b as u32 as u64)
+}
+
+/// What the samples of a row with the same first x coefficient share
+/// ([`Wavelet::span_setup`]).
 struct Span<R> {
     first: Option<i32>,
     /// Whether their coefficients reach a second block along x.
@@ -54,17 +65,17 @@ struct Span<R> {
     factors: [[R; 3]; 2],
     /// How many entries of `blocks` are used.
     count: usize,
-    /// The blocks to sum, in `block_sums`'s order: the x side (0 or 1), the subset of
-    /// crossing y/z axes (bit 0: y in the next block, bit 1: z), the three columns' slots.
-    blocks: [(usize, usize, [usize; 3]); 8],
+    /// The blocks to sum, in `block_sums`'s order: the x side (0 or 1) and the index in
+    /// `Columns::values` of each of the three columns for the block's subset of crossing y/z
+    /// axes.
+    blocks: [(u8, [u8; 3]); 8],
 }
 
 /// What stays fixed along a row: its y/z blocks, local indices, crossing axes and weights.
 struct Row<R, const D: usize> {
     /// The first block along each axis (x unused).
     block: [i32; D],
-    /// The local index (plus nothing: in `[h, n + h)`) of the first coefficient along each
-    /// axis (x unused).
+    /// The local index of the first coefficient along each axis (x unused).
     local0: [usize; D],
     /// Bits 1.. : the y/z axes whose coefficients reach a second block.
     crossing: usize,
@@ -107,41 +118,50 @@ impl<T> Wavelet<'_, T> {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
         let (n, h) = (T::SIZE, self.half_width::<D>());
         let row = self.row_setup(&rest, n, h);
-        let mut blocks = [Block::<D> {
+        let unused = AxisMap {
+            stride: 0,
+            flip: false,
+            shift: 0,
+        };
+        let mut blocks = [Block {
             key: None,
-            places: [None; 4],
+            x: [unused; 4],
             base: [[[0; 3]; 3]; 4],
         }; BLOCKS];
-        let mut columns = [Column {
-            key: None,
-            values: [[[R::ZERO; 3]; 3]; 4],
-        }; SLOTS];
-        let planes = if D == 3 { 3 } else { 1 };
+        let mut columns = Columns {
+            keys: core::array::from_fn(|k| {
+                // x index k/2 + 1 and block parity k & 1: the slot after k's pair.
+                slot(((k / 2 + 1) % (SLOTS / 2)) as i32, (k & 1) as i32).1
+            }),
+            values: [[[R::ZERO; 3]; 3]; 4 * SLOTS],
+        };
         let mut span = Span::<R> {
             first: None,
             two: false,
             factors: [[R::ONE; 3]; 2],
             count: 0,
-            blocks: [(0, 0, [0; 3]); 8],
+            blocks: [(0, [0; 3]); 8],
         };
+        let planes = if D == 3 { 3 } else { 1 };
         for (i, o) in out.iter_mut().enumerate() {
             let (first, weights) = bspline3(x(i));
             if span.first != Some(first) {
-                span = self.span_setup(&row, first, &mut blocks, &mut columns, n, h);
+                self.span_setup(&mut span, &row, first, &mut blocks, &mut columns, n, h);
             }
             // The x weights in each block: `evaluate`'s (`sided`), with the coefficients
-            // outside a block weighing 0 (`exclude`).
+            // outside a block weighing 0 (`exclude`). Factors are in [0, 1]: `mul_fraction`
+            // is exact for 0 and 1.
             let xs: [[R; 3]; 2] = if span.two {
-                // Factors are in [0, 1]: `mul_fraction` is exact for 0 and 1.
                 span.factors
                     .map(|f| core::array::from_fn(|j| weights[j].mul_fraction(f[j])))
             } else {
                 [weights; 2]
             };
             let mut sum = R::ZERO;
-            for &(mx, s, slots) in span.blocks.iter().take(span.count) {
-                let cols = slots.map(|k| &columns[k % SLOTS].values[s & 3]);
-                let wx = &xs[mx & 1];
+            for &(mx, at) in span.blocks.iter().take(span.count) {
+                let cols = at.map(|k| &columns.values[k as usize % (4 * SLOTS)]);
+                let s = at[0] as usize & 3;
+                let wx = &xs[mx as usize & 1];
                 let wy = &row.sides[s & 1][1];
                 let wz = &row.sides[s >> (D - 2) & 1][D - 1];
                 for jz in 0..planes {
@@ -164,31 +184,31 @@ impl<T> Wavelet<'_, T> {
         }
     }
 
-    /// What the samples whose first x coefficient is `first` share: whether they reach a
-    /// second block along x, their x weights' factors in each block, and the blocks they sum
-    /// (every subset of the crossing axes, largest first, as `block_sums`), each with the cache
-    /// slots of its three columns, fetched here if missing.
+    /// Sets `span` for the samples whose first x coefficient is `first`: whether they reach
+    /// a second block along x, their x weights' factors in each block, and the blocks they sum
+    /// (every subset of the crossing axes, largest first, as `block_sums`), each with its
+    /// three columns, fetched here if missing.
+    #[allow(
+        clippy::too_many_arguments,
+        reason = "the row's state, passed apart to borrow"
+    )]
     #[inline]
     fn span_setup<R: Real, const D: usize>(
         &self,
+        span: &mut Span<R>,
         row: &Row<R, D>,
         first: i32,
-        blocks: &mut [Block<D>; BLOCKS],
-        columns: &mut [Column<R>; SLOTS],
+        blocks: &mut [Block; BLOCKS],
+        columns: &mut Columns<R>,
         n: usize,
         h: usize,
-    ) -> Span<R>
-    where
+    ) where
         T: TileData<D>,
     {
         let (bx, l0, two) = axis_span(first, n, h);
-        let mut span = Span {
-            first: Some(first),
-            two,
-            factors: [[R::ONE; 3]; 2],
-            count: 0,
-            blocks: [(0, 0, [0; 3]); 8],
-        };
+        span.first = Some(first);
+        span.two = two;
+        span.count = 0;
         if two {
             // `sided`'s blend weights (1 where blocks abut), and 0 outside each block.
             let bits = members(1, [l0], n, h);
@@ -208,27 +228,37 @@ impl<T> Wavelet<'_, T> {
         for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
             let mx = m & 1;
             let b = bx.wrapping_add(mx as i32);
-            let mut slots = [0; 3];
-            for (jx, slot) in slots.iter_mut().enumerate() {
-                let g = first.wrapping_add(jx as i32);
-                // Distinct for the three x indices and two blocks of one span.
-                *slot = (((g as u32 as usize) % (SLOTS / 2)) * 2 + (b & 1) as usize) % SLOTS;
-                let entry = &mut columns[*slot];
-                if entry.key != Some((g, b)) {
+            let s = (m >> 1) & 3;
+            let mut at = [0u8; 3];
+            for (jx, at) in at.iter_mut().enumerate() {
+                let (slot, key) = slot(first.wrapping_add(jx as i32), b);
+                if columns.keys[slot] != key {
                     let block = &mut blocks[(b & 1) as usize % BLOCKS];
                     if block.key != Some(b) {
-                        *block = self.block_setup(row, b, n);
+                        self.block_setup(block, row, b, n);
                     }
-                    self.column_fill(row, block, l0 + jx + n - n * mx, entry, n);
-                    entry.key = Some((g, b));
+                    columns.keys[slot] = key;
+                    let yz = row.crossing >> 1;
+                    // The local index in block b, plus n: l0 + jx − n·mx + n.
+                    let l_plus_n = l0 + jx + n - n * mx;
+                    for t in (0..4usize).filter(|t| t & !yz == 0) {
+                        let x = block.x[t & 3].offset(l_plus_n, n);
+                        let values = &mut columns.values[(4 * slot + (t & 3)) % (4 * SLOTS)];
+                        for (values, base) in values.iter_mut().zip(&block.base[t & 3]) {
+                            let planes = if D == 3 { 3 } else { 1 };
+                            for (v, &b) in values.iter_mut().zip(base).take(planes) {
+                                *v = self.tile.flat(x + b);
+                            }
+                        }
+                    }
                 }
+                *at = (4 * slot + s) as u8;
             }
             if let Some(entry) = span.blocks.get_mut(span.count) {
-                *entry = (mx, (m >> 1) & 3, slots);
+                *entry = (mx as u8, at);
                 span.count += 1;
             }
         }
-        span
     }
 
     /// The row's y/z blocks, local indices, crossing axes, weights and members.
@@ -268,18 +298,19 @@ impl<T> Wavelet<'_, T> {
         row
     }
 
-    /// Block `b` along x: for each subset of the row's crossing y/z axes, the placement of the
-    /// block it names and the y/z parts of the tile index of the row's coefficients in it.
+    /// Block `b` along x: for each subset of the row's crossing y/z axes, how the block it
+    /// names reads x and the y/z parts of the tile index of the row's coefficients in it.
     #[inline(never)]
-    fn block_setup<R: Real, const D: usize>(&self, row: &Row<R, D>, b: i32, n: usize) -> Block<D>
-    where
+    fn block_setup<R: Real, const D: usize>(
+        &self,
+        block: &mut Block,
+        row: &Row<R, D>,
+        b: i32,
+        n: usize,
+    ) where
         T: TileData<D>,
     {
-        let mut block = Block {
-            key: Some(b),
-            places: [None; 4],
-            base: [[[0; 3]; 3]; 4],
-        };
+        block.key = Some(b);
         let yz = row.crossing >> 1;
         for s in (0..4usize).filter(|s| s & !yz == 0) {
             let mut at = row.block;
@@ -302,34 +333,7 @@ impl<T> Wavelet<'_, T> {
                     block.base[s & 3][jy][jz] = offset;
                 }
             }
-            block.places[s & 3] = Some(place);
-        }
-        block
-    }
-
-    /// Fetches the column at local x index `l_plus_n − n` of `block` into `entry`.
-    #[inline]
-    fn column_fill<R: Real, const D: usize>(
-        &self,
-        row: &Row<R, D>,
-        block: &Block<D>,
-        l_plus_n: usize,
-        entry: &mut Column<R>,
-        n: usize,
-    ) where
-        T: TileData<D>,
-    {
-        let yz = row.crossing >> 1;
-        for s in (0..4usize).filter(|s| s & !yz == 0) {
-            if let Some(place) = &block.places[s & 3] {
-                let x = place.axis(0, n).offset(l_plus_n, n);
-                for (values, base) in entry.values[s & 3].iter_mut().zip(&block.base[s & 3]) {
-                    let planes = if D == 3 { 3 } else { 1 };
-                    for (v, &b) in values.iter_mut().zip(base).take(planes) {
-                        *v = self.tile.flat(x + b);
-                    }
-                }
-            }
+            block.x[s & 3] = place.axis(0, n);
         }
     }
 }
