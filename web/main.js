@@ -99,6 +99,36 @@ function drawBands() {
   });
 }
 
+// The whole view in the URL's fragment, so a view can be shared: every control by its id,
+// the pan and the band weights. Written after each frame that rendered (so a shared URL is a
+// view that works), read once at load; unknown keys are ignored, and a bad value lands in its
+// field, whose message the page then shows.
+function saveState() {
+  const q = new URLSearchParams();
+  for (const el of $('controls').elements) {
+    if (!el.id) continue;
+    q.set(el.id, el.type === 'checkbox' ? (el.checked ? '1' : '0') : el.value);
+  }
+  q.set('pan', state.pan.join(','));
+  q.set('bands', state.bandWeights.join(','));
+  history.replaceState(null, '', `#${q}`);
+}
+
+function loadState() {
+  const q = new URLSearchParams(location.hash.slice(1));
+  for (const [key, value] of q) {
+    if (key === 'pan' || key === 'bands') {
+      const numbers = value.split(',').map(Number);
+      const target = key === 'pan' ? state.pan : state.bandWeights;
+      if (numbers.length === target.length && numbers.every(Number.isFinite)) target.splice(0, target.length, ...numbers);
+      continue;
+    }
+    const el = $('controls').elements.namedItem(key);
+    if (!el || !el.id) continue;
+    if (el.type === 'checkbox') el.checked = value === '1'; else el.value = value;
+  }
+}
+
 let demo;
 function render() {
   let p;
@@ -123,6 +153,7 @@ function render() {
   $('message').textContent = '';
   state.lastError = '';
   state.renders++;
+  saveState();
   return true;
 }
 
@@ -175,6 +206,7 @@ function wire() {
 await init();
 demo = new Demo(SIZE);
 fillKinds();
+loadState();
 drawBands();
 wire();
 render();

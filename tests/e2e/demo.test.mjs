@@ -2,7 +2,7 @@
 // Serves web/ on 127.0.0.1, then checks what a person would: it renders, every noise differs,
 // each wavelet tiling differs, dragging a band bar changes the spectrum, f32 and fixed point
 // agree, filtering and infinite zoom do what they say, bad input shows a message and leaves the
-// page working, and the browser benchmark runs. Screenshots go to target/e2e/.
+// page working, the URL holds the view, and the browser benchmark runs. Screenshots go to target/e2e/.
 // Prints "N passed, N failed" and exits non-zero on any failure.
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -23,7 +23,7 @@ await page.goto(`${base}/index.html`);
 await page.waitForFunction(() => window.bandnoise && window.bandnoise.ready, null, { timeout: 30000 });
 
 /** Statistics of a canvas: variance of its red channel, a hash, and its pixels' red values. */
-const canvas = (id) => page.evaluate((id) => {
+const canvas = (id, on = page) => on.evaluate((id) => {
   const c = document.getElementById(id);
   const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
   let sum = 0, sum2 = 0, hash = 2166136261;
@@ -330,6 +330,35 @@ await test('bad input shows a message and leaves the page working', async () => 
   await page.waitForFunction(() => window.bandnoise.lastError === '');
   assert.ok((await canvas('noise')).variance > 200);
   assert.deepEqual(pageErrors, []);
+});
+
+await test('the URL holds the whole view: the copied URL shows the same image', async () => {
+  await set('kind', 'gabor');
+  await set('seed', '5');
+  await set('frequency', '2');
+  await set('zoom', '20');
+  const url = page.url();
+  assert.match(url, /#.*kind=gabor.*seed=5/);
+  const here = await canvas('noise');
+  const there = await browser.newPage({ viewport: { width: 1300, height: 1250 } });
+  await there.goto(url);
+  await there.waitForFunction(() => window.bandnoise && window.bandnoise.ready, null, { timeout: 30000 });
+  for (const id of ['kind', 'seed', 'frequency', 'zoom', 'fractal', 'tiling']) {
+    assert.equal(await there.inputValue(`#${id}`), await page.inputValue(`#${id}`), id);
+  }
+  assert.equal((await canvas('noise', there)).hash, here.hash, 'the same image');
+  // A bad value in a shared URL lands in its field and shows the page's message.
+  await there.goto(`${base}/index.html#zoom=-3`);
+  await there.reload();
+  await there.waitForFunction(() => window.bandnoise && window.bandnoise.ready, null, { timeout: 30000 });
+  assert.equal(await there.inputValue('#zoom'), '-3');
+  assert.match(await there.textContent('#message'), /zoom/);
+  await there.close();
+  await set('zoom', '32');
+  await set('frequency', '1');
+  await set('seed', '0');
+  await set('kind', 'perlin');
+  assert.match(page.url(), /kind=perlin/);
 });
 
 // Goal (issue 4): bandnoise ≥ 3× the samples per second of simplex-noise, measured in the same
