@@ -129,14 +129,32 @@ function loadState() {
   }
 }
 
+// Each refused value's message sits next to its field (the wasm side names the field: the
+// element's id; the pan has none), and in the message line under the page.
+function showError(field, text) {
+  for (const old of document.querySelectorAll('.field-error')) old.remove();
+  $('message').textContent = text;
+  const el = field ? $(field) : null;
+  if (!el || !text) return;
+  const note = document.createElement('span');
+  note.className = 'field-error';
+  note.id = `error-${field}`;
+  note.setAttribute('role', 'alert');
+  note.textContent = text;
+  (el.closest('label') || el).after(note);
+}
+
 let demo;
 function render() {
   let p;
   try {
     p = params();
   } catch (e) {
-    state.lastError = String(e);
-    $('message').textContent = state.lastError;
+    // A BadField from the wasm side (its field's id and why); anything else by its text.
+    const bad = typeof e === 'object' && e !== null && typeof e.field === 'string';
+    state.lastError = bad ? e.message : String(e);
+    showError(bad ? e.field : '', state.lastError);
+    if (bad) e.free();
     return false;
   }
   const t0 = performance.now();
@@ -150,7 +168,7 @@ function render() {
   $('readout').textContent =
     `${ms.toFixed(1)} ms per frame, ${(demo.samples() / ms / 1000).toFixed(1)} Msamples/s ` +
     `(mean ${demo.mean().toFixed(3)}, σ ${demo.std_dev().toFixed(3)})`;
-  $('message').textContent = '';
+  showError('', '');
   state.lastError = '';
   state.renders++;
   saveState();

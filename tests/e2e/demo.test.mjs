@@ -315,9 +315,13 @@ await test('bad input shows a message and leaves the page working', async () => 
       await set(field, v);
       const m = await message();
       assert.ok(m.length > 0, `${field}=${JSON.stringify(v)} shows no message`);
+      // The same message next to the field.
+      assert.equal(await page.textContent(`#error-${field}`), m, `${field}=${JSON.stringify(v)}`);
+      assert.equal(await page.locator('.field-error').count(), 1);
     }
     await set(field, good);
     assert.equal(await message(), '', `${field} restored, message stays`);
+    assert.equal(await page.locator('.field-error').count(), 0, `${field} restored, its note stays`);
     assert.ok((await canvas('noise')).variance > 200);
   }
   await set('fractal', 'none');
@@ -347,12 +351,12 @@ await test('the URL holds the whole view: the copied URL shows the same image', 
     assert.equal(await there.inputValue(`#${id}`), await page.inputValue(`#${id}`), id);
   }
   assert.equal((await canvas('noise', there)).hash, here.hash, 'the same image');
-  // A bad value in a shared URL lands in its field and shows the page's message.
+  // A bad value in a shared URL lands in its field and shows the message next to it.
   await there.goto(`${base}/index.html#zoom=-3`);
   await there.reload();
   await there.waitForFunction(() => window.bandnoise && window.bandnoise.ready, null, { timeout: 30000 });
   assert.equal(await there.inputValue('#zoom'), '-3');
-  assert.match(await there.textContent('#message'), /zoom/);
+  assert.match(await there.textContent('#error-zoom'), /zoom must be positive/);
   await there.close();
   await set('zoom', '32');
   await set('frequency', '1');

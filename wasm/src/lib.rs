@@ -2,7 +2,7 @@
 //! buffer and draws it on a canvas, with the frame's power spectrum and value histogram.
 //!
 //! Everything about noise comes from `bandnoise`; this crate only validates what JavaScript
-//! sends (bad parameters become an `Err` with a message, never a panic), picks the noise,
+//! sends (bad parameters become a `BadField` naming the field and why, never a panic), picks the noise,
 //! maps values to colours, and computes the spectrum (a radix-2 FFT, `fft.rs`).
 
 mod fft;
@@ -10,7 +10,7 @@ mod palette;
 mod params;
 mod render;
 
-pub use params::{Params, kinds};
+pub use params::{BadField, Params, kinds};
 pub use render::Demo;
 
 /// A free-list allocator of about 800 bytes instead of the standard library's dlmalloc (about

@@ -1,6 +1,8 @@
 //! What the page asks for, checked, as a [`Spec`]: the noises the page offers are the
 //! description's bases ([`kinds`]), so a noise added to `bandnoise::spec` appears in the demo.
 
+use core::cell::Cell;
+
 use bandnoise::fractal::{Fractal, Kind, Octaves};
 use bandnoise::impulse::{Envelope, Kernel, Orientation};
 use bandnoise::simplex::{Flow, FlowSum};
@@ -149,6 +151,30 @@ pub struct Params {
     pub(crate) marble: bool,
 }
 
+/// A refused setting: the page's field it came from (its element's id; empty for the pan) and
+/// why. JavaScript receives it thrown, and shows the message next to the field.
+#[wasm_bindgen]
+#[derive(Debug)]
+pub struct BadField {
+    field: &'static str,
+    message: String,
+}
+
+#[wasm_bindgen]
+impl BadField {
+    /// The id of the page's field whose value is refused (`""` for the pan, which has none).
+    #[wasm_bindgen(getter)]
+    pub fn field(&self) -> String {
+        self.field.into()
+    }
+
+    /// Why, in words.
+    #[wasm_bindgen(getter)]
+    pub fn message(&self) -> String {
+        self.message.clone()
+    }
+}
+
 fn finite(name: &str, v: f64) -> Result<f32, String> {
     if v.is_finite() && v.abs() <= 1e30 {
         Ok(v as f32)
@@ -267,7 +293,8 @@ impl Params {
     /// period;
     /// projection asked for a lattice noise; filtering asked for a lattice noise without a
     /// fractal sum, or with projection; infinite zoom asked for another noise than multiband,
-    /// or with projection, a fractal sum or filtering; and the core's own errors. (JavaScript receives the message as a thrown string.)
+    /// or with projection, a fractal sum or filtering; and the core's own errors. Each is a
+    /// [`BadField`] naming the page's field it came from (JavaScript receives it thrown).
     #[wasm_bindgen(constructor)]
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -301,242 +328,308 @@ impl Params {
         filtered: bool,
         infinite: bool,
         palette: &str,
-    ) -> Result<Params, String> {
-        let base = kind(kind_name)?;
-        let fixed = match number {
-            "f32" => false,
-            "fixed" => true,
-            _ => {
-                return Err(format!(
-                    "number type must be \"f32\" or \"fixed\", not \"{number}\""
-                ));
-            }
-        };
-        if !(seed.is_finite() && seed >= 0.0 && seed <= u32::MAX as f64 && seed.fract() == 0.0) {
-            return Err(format!(
-                "seed must be a whole number from 0 to {}, not {}",
-                u32::MAX,
-                num(seed)
-            ));
-        }
-        let mut spec = Spec::new(base, seed as u32);
-        let zoom = finite("zoom", zoom)?;
-        if !(zoom > 0.0 && zoom <= 1e6) {
-            return Err(format!(
-                "zoom must be positive and at most 1e6, not {}",
-                num(zoom.into())
-            ));
-        }
-        let pan = [finite("pan x", pan_x)?, finite("pan y", pan_y)?];
-        let time = finite("time", time)?;
-        if !(period.is_finite() && (0.0..=65536.0).contains(&period) && period.fract() == 0.0) {
-            return Err(format!(
-                "period must be a whole number of cells from 1 to 65536 (0: none), not {}",
-                num(period)
-            ));
-        }
-        if period > 0.0 {
-            spec = spec.with_period(&[period as u32; 3]).map_err(describe)?;
-        }
-        let kind = match fractal {
-            "none" => None,
-            "fbm" => Some(Kind::Fbm),
-            "turbulence" => Some(Kind::Turbulence),
-            "ridged" => Some(Kind::Ridged),
-            _ => {
-                return Err(format!(
-                    "fractal must be none, fbm, turbulence or ridged, not \"{fractal}\""
-                ));
-            }
-        };
-        if !(octaves.is_finite() && (1.0..=16.0).contains(&octaves) && octaves.fract() == 0.0) {
-            return Err(format!(
-                "octaves must be a whole number from 1 to 16, not {}",
-                num(octaves)
-            ));
-        }
-        let (lacunarity, gain) = (finite("lacunarity", lacunarity)?, finite("gain", gain)?);
-        // The core checks the ranges and says why.
-        let octaves = Octaves::new(octaves as u32, lacunarity, gain).map_err(describe)?;
-        let distribution = match distribution {
-            "gaussian" => Distribution::Gaussian,
-            "uniform" => Distribution::Uniform,
-            _ => {
-                return Err(format!(
-                    "distribution must be gaussian or uniform, not \"{distribution}\""
-                ));
-            }
-        };
-        let tiling = match tiling {
-            "varied" => Tiling::Varied,
-            "blended" => Tiling::Blended,
-            "periodic" => Tiling::Periodic,
-            _ => {
-                return Err(format!(
-                    "tiling must be varied, blended or periodic, not \"{tiling}\""
-                ));
-            }
-        };
-        if base.is_wavelet() {
-            spec = spec.with_tiling(tiling).map_err(describe)?;
-        }
-        let kernel = match kernel {
-            "cosine" => Kernel::Cosine,
-            "catmull-rom" => Kernel::CatmullRom,
-            _ => {
-                return Err(format!(
-                    "kernel must be cosine or catmull-rom, not \"{kernel}\""
-                ));
-            }
-        };
-        let density = finite("density", density)?;
-        if base.is_impulse() {
-            // The core checks the range and says why.
-            spec = spec.with_density(density).map_err(describe)?;
-        }
-        if base == Base::Sparse {
-            // Accepted for sparse noise (refused only for other bases).
-            spec = spec.with_kernel(kernel).unwrap_or(spec);
-        }
-        let orientation = match orientation {
-            "anisotropic" => Orientation::Anisotropic,
-            "isotropic" => Orientation::Isotropic,
-            "hybrid" => Orientation::Hybrid,
-            _ => {
-                return Err(format!(
-                    "orientation must be anisotropic, isotropic or hybrid, not \"{orientation}\""
-                ));
-            }
-        };
-        let envelope = match envelope {
-            "hann" => Envelope::Hann,
-            "truncated" => Envelope::Truncated,
-            _ => {
-                return Err(format!(
-                    "envelope must be hann or truncated, not \"{envelope}\""
-                ));
-            }
-        };
-        let (frequency, bandwidth) = (
-            finite("frequency", frequency)?,
-            finite("bandwidth", bandwidth)?,
-        );
-        let direction = [
-            finite("direction x", direction_x)?,
-            finite("direction y", direction_y)?,
-        ];
-        if base == Base::Gabor {
-            // The core checks the ranges and says why.
-            spec = spec
-                .with_spectrum(frequency, bandwidth)
-                .and_then(|s| s.with_direction(&direction))
-                .and_then(|s| s.with_orientation(orientation))
-                .and_then(|s| s.with_envelope(envelope))
-                .map_err(describe)?;
-        }
-        let covariance = match covariance {
-            "low-pass" => Covariance::LowPass,
-            "band-pass" => Covariance::BandPass,
-            _ => {
-                return Err(format!(
-                    "covariance must be low-pass or band-pass, not \"{covariance}\""
-                ));
-            }
-        };
-        if base == Base::Wiener {
-            // Accepted for Wiener noise (refused only for other bases).
-            spec = spec.with_covariance(covariance).unwrap_or(spec);
-        }
-        // The textures' two settings (`NaN`: the texture's default), for the textures only.
-        if base.is_texture() && texture.len() == 2 && texture.iter().any(|v| !v.is_nan()) {
-            let current = spec.texture();
-            let mut settings = [0.0f32; 2];
-            for ((s, &v), (&d, name)) in settings.iter_mut().zip(texture).zip(
-                current
-                    .iter()
-                    .zip(["texture setting 1", "texture setting 2"]),
-            ) {
-                *s = if v.is_nan() { d } else { finite(name, v)? };
-            }
-            spec = spec.with_texture(settings).map_err(describe)?;
-        }
-        let bands = Bands::new(-3, band_weights).map_err(describe)?;
-        if base == Base::Multiband {
-            if band_weights.iter().all(|w| *w == 0.0) {
-                return Err("every band weight is zero: raise at least one band".into());
-            }
-            spec = spec
-                .with_bands(bands)
-                .and_then(|s| s.with_distribution(distribution))
-                .map_err(describe)?;
-        }
-        let warp = finite("warp", warp)?;
-        if warp != 0.0 && base == Base::Flow {
-            return Err("the warp applies to noises with a 3D form, not flow noise".into());
-        }
-        if warp != 0.0 {
-            spec = spec.with_warp(warp).map_err(describe)?;
-        }
-        // Filtering a fractal sum filters its octaves: the sum is then taken in `render.rs`.
-        let unsummed = spec;
-        if let Some(kind) = kind {
-            spec = spec.with_fractal(kind, octaves);
-        }
-        if projected && !base.is_wavelet() {
-            return Err(format!(
-                "projection applies to wavelet and multiband noise, not {base}"
-            ));
-        }
-        if filtered && projected {
-            return Err("filtering applies to sliced noise, not projected".into());
-        }
-        if filtered && kind.is_none() && !base.is_wavelet() {
-            return Err(format!(
-                "filtering applies to wavelet and multiband noise and to fractal sums, not to \
-                 {base} alone"
-            ));
-        }
-        if filtered && base == Base::Flow {
-            return Err("filtering applies to wavelet and multiband noise and to fractal sums of noises with a 3D form, not to flow noise".into());
-        }
-        if infinite && base != Base::Multiband {
-            return Err(format!(
-                "infinite zoom applies to multiband noise, not {base}"
-            ));
-        }
-        if infinite && (projected || kind.is_some() || filtered) {
-            return Err(
-                "infinite zoom is multiband noise on its own: no projection, fractal sum or \
-                 filtering"
-                    .into(),
-            );
-        }
-        let marble = match palette {
-            "grey" => false,
-            "marble" => true,
-            _ => return Err(format!("palette must be grey or marble, not \"{palette}\"")),
-        };
-        Ok(Params {
-            noise: if base == Base::Flow {
-                Sampled::Flow(spec, flow_noise(&spec, time).map_err(describe)?)
-            } else {
-                Sampled::Solid(spec.build_with::<3, WebTiles>().map_err(describe)?)
-            },
-            fixed,
-            zoom,
-            pan,
-            time,
-            projected,
-            filter: match (filtered, kind) {
-                (false, _) => Filter::None,
-                (true, None) => Filter::Band,
-                (true, Some(kind)) => {
-                    let noise = unsummed.build_with().map_err(describe)?;
-                    Filter::Octaves(Box::new(Fractal::new(noise, octaves, kind)))
+    ) -> Result<Params, BadField> {
+        // The field the checks are at: a refusal is tagged with it.
+        let field = Cell::new("kind");
+        let built = (|| -> Result<Params, String> {
+            let base = kind(kind_name)?;
+            field.set("number");
+            let fixed = match number {
+                "f32" => false,
+                "fixed" => true,
+                _ => {
+                    return Err(format!(
+                        "number type must be \"f32\" or \"fixed\", not \"{number}\""
+                    ));
                 }
-            },
-            infinite,
-            marble,
+            };
+            field.set("seed");
+            if !(seed.is_finite() && seed >= 0.0 && seed <= u32::MAX as f64 && seed.fract() == 0.0)
+            {
+                return Err(format!(
+                    "seed must be a whole number from 0 to {}, not {}",
+                    u32::MAX,
+                    num(seed)
+                ));
+            }
+            let mut spec = Spec::new(base, seed as u32);
+            field.set("zoom");
+            let zoom = finite("zoom", zoom)?;
+            if !(zoom > 0.0 && zoom <= 1e6) {
+                return Err(format!(
+                    "zoom must be positive and at most 1e6, not {}",
+                    num(zoom.into())
+                ));
+            }
+            field.set("");
+            let pan = [finite("pan x", pan_x)?, finite("pan y", pan_y)?];
+            field.set("time");
+            let time = finite("time", time)?;
+            field.set("period");
+            if !(period.is_finite() && (0.0..=65536.0).contains(&period) && period.fract() == 0.0) {
+                return Err(format!(
+                    "period must be a whole number of cells from 1 to 65536 (0: none), not {}",
+                    num(period)
+                ));
+            }
+            if period > 0.0 {
+                spec = spec.with_period(&[period as u32; 3]).map_err(describe)?;
+            }
+            field.set("fractal");
+            let kind = match fractal {
+                "none" => None,
+                "fbm" => Some(Kind::Fbm),
+                "turbulence" => Some(Kind::Turbulence),
+                "ridged" => Some(Kind::Ridged),
+                _ => {
+                    return Err(format!(
+                        "fractal must be none, fbm, turbulence or ridged, not \"{fractal}\""
+                    ));
+                }
+            };
+            field.set("octaves");
+            if !(octaves.is_finite() && (1.0..=16.0).contains(&octaves) && octaves.fract() == 0.0) {
+                return Err(format!(
+                    "octaves must be a whole number from 1 to 16, not {}",
+                    num(octaves)
+                ));
+            }
+            field.set("lacunarity");
+            let lacunarity = finite("lacunarity", lacunarity)?;
+            field.set("gain");
+            let gain = finite("gain", gain)?;
+            // The core checks the ranges and says why.
+            let octaves = Octaves::new(octaves as u32, lacunarity, gain).map_err(|e| {
+                field.set(match e {
+                    Error::Lacunarity(_) => "lacunarity",
+                    Error::Gain(_) => "gain",
+                    _ => "octaves",
+                });
+                describe(e)
+            })?;
+            field.set("distribution");
+            let distribution = match distribution {
+                "gaussian" => Distribution::Gaussian,
+                "uniform" => Distribution::Uniform,
+                _ => {
+                    return Err(format!(
+                        "distribution must be gaussian or uniform, not \"{distribution}\""
+                    ));
+                }
+            };
+            field.set("tiling");
+            let tiling = match tiling {
+                "varied" => Tiling::Varied,
+                "blended" => Tiling::Blended,
+                "periodic" => Tiling::Periodic,
+                _ => {
+                    return Err(format!(
+                        "tiling must be varied, blended or periodic, not \"{tiling}\""
+                    ));
+                }
+            };
+            if base.is_wavelet() {
+                spec = spec.with_tiling(tiling).map_err(describe)?;
+            }
+            field.set("kernel");
+            let kernel = match kernel {
+                "cosine" => Kernel::Cosine,
+                "catmull-rom" => Kernel::CatmullRom,
+                _ => {
+                    return Err(format!(
+                        "kernel must be cosine or catmull-rom, not \"{kernel}\""
+                    ));
+                }
+            };
+            field.set("density");
+            let density = finite("density", density)?;
+            if base.is_impulse() {
+                // The core checks the range and says why.
+                spec = spec.with_density(density).map_err(describe)?;
+            }
+            if base == Base::Sparse {
+                // Accepted for sparse noise (refused only for other bases).
+                spec = spec.with_kernel(kernel).unwrap_or(spec);
+            }
+            field.set("orientation");
+            let orientation = match orientation {
+                "anisotropic" => Orientation::Anisotropic,
+                "isotropic" => Orientation::Isotropic,
+                "hybrid" => Orientation::Hybrid,
+                _ => {
+                    return Err(format!(
+                        "orientation must be anisotropic, isotropic or hybrid, not \"{orientation}\""
+                    ));
+                }
+            };
+            field.set("envelope");
+            let envelope = match envelope {
+                "hann" => Envelope::Hann,
+                "truncated" => Envelope::Truncated,
+                _ => {
+                    return Err(format!(
+                        "envelope must be hann or truncated, not \"{envelope}\""
+                    ));
+                }
+            };
+            field.set("frequency");
+            let frequency = finite("frequency", frequency)?;
+            field.set("bandwidth");
+            let bandwidth = finite("bandwidth", bandwidth)?;
+            field.set("angle");
+            let direction = [
+                finite("direction x", direction_x)?,
+                finite("direction y", direction_y)?,
+            ];
+            if base == Base::Gabor {
+                // The core checks the ranges and says why.
+                spec = spec
+                    .with_spectrum(frequency, bandwidth)
+                    .and_then(|s| s.with_direction(&direction))
+                    .and_then(|s| s.with_orientation(orientation))
+                    .and_then(|s| s.with_envelope(envelope))
+                    .map_err(|e| {
+                        field.set(match e {
+                            Error::Bandwidth(_) => "bandwidth",
+                            Error::Direction => "angle",
+                            _ => "frequency",
+                        });
+                        describe(e)
+                    })?;
+            }
+            field.set("covariance");
+            let covariance = match covariance {
+                "low-pass" => Covariance::LowPass,
+                "band-pass" => Covariance::BandPass,
+                _ => {
+                    return Err(format!(
+                        "covariance must be low-pass or band-pass, not \"{covariance}\""
+                    ));
+                }
+            };
+            if base == Base::Wiener {
+                // Accepted for Wiener noise (refused only for other bases).
+                spec = spec.with_covariance(covariance).unwrap_or(spec);
+            }
+            // The textures' two settings (`NaN`: the texture's default), for the textures only.
+            field.set("texture1");
+            if base.is_texture() && texture.len() == 2 && texture.iter().any(|v| !v.is_nan()) {
+                let current = spec.texture();
+                let mut settings = [0.0f32; 2];
+                let names = [
+                    ("texture setting 1", "texture1"),
+                    ("texture setting 2", "texture2"),
+                ];
+                for ((s, &v), (&d, (name, id))) in settings
+                    .iter_mut()
+                    .zip(texture)
+                    .zip(current.iter().zip(names))
+                {
+                    field.set(id);
+                    *s = if v.is_nan() { d } else { finite(name, v)? };
+                }
+                // The core names the setting it refuses, in the texture's order of settings.
+                spec = spec.with_texture(settings).map_err(|e| {
+                    if let Error::TextureSetting { name, .. } = e {
+                        let first = base.texture_settings().and_then(|n| n.first().copied());
+                        field.set(if first == Some(name) {
+                            "texture1"
+                        } else {
+                            "texture2"
+                        });
+                    }
+                    describe(e)
+                })?;
+            }
+            field.set("bands");
+            let bands = Bands::new(-3, band_weights).map_err(describe)?;
+            if base == Base::Multiband {
+                if band_weights.iter().all(|w| *w == 0.0) {
+                    return Err("every band weight is zero: raise at least one band".into());
+                }
+                spec = spec
+                    .with_bands(bands)
+                    .and_then(|s| s.with_distribution(distribution))
+                    .map_err(describe)?;
+            }
+            field.set("warp");
+            let warp = finite("warp", warp)?;
+            if warp != 0.0 && base == Base::Flow {
+                return Err("the warp applies to noises with a 3D form, not flow noise".into());
+            }
+            if warp != 0.0 {
+                spec = spec.with_warp(warp).map_err(describe)?;
+            }
+            // Filtering a fractal sum filters its octaves: the sum is then taken in `render.rs`.
+            let unsummed = spec;
+            if let Some(kind) = kind {
+                spec = spec.with_fractal(kind, octaves);
+            }
+            field.set("projected");
+            if projected && !base.is_wavelet() {
+                return Err(format!(
+                    "projection applies to wavelet and multiband noise, not {base}"
+                ));
+            }
+            field.set("filtered");
+            if filtered && projected {
+                return Err("filtering applies to sliced noise, not projected".into());
+            }
+            if filtered && kind.is_none() && !base.is_wavelet() {
+                return Err(format!(
+                    "filtering applies to wavelet and multiband noise and to fractal sums, not to \
+                     {base} alone"
+                ));
+            }
+            if filtered && base == Base::Flow {
+                return Err("filtering applies to wavelet and multiband noise and to fractal sums of noises with a 3D form, not to flow noise".into());
+            }
+            field.set("infinite");
+            if infinite && base != Base::Multiband {
+                return Err(format!(
+                    "infinite zoom applies to multiband noise, not {base}"
+                ));
+            }
+            if infinite && (projected || kind.is_some() || filtered) {
+                return Err(
+                    "infinite zoom is multiband noise on its own: no projection, fractal sum or \
+                     filtering"
+                        .into(),
+                );
+            }
+            field.set("palette");
+            let marble = match palette {
+                "grey" => false,
+                "marble" => true,
+                _ => return Err(format!("palette must be grey or marble, not \"{palette}\"")),
+            };
+            field.set("kind");
+            Ok(Params {
+                noise: if base == Base::Flow {
+                    Sampled::Flow(spec, flow_noise(&spec, time).map_err(describe)?)
+                } else {
+                    Sampled::Solid(spec.build_with::<3, WebTiles>().map_err(describe)?)
+                },
+                fixed,
+                zoom,
+                pan,
+                time,
+                projected,
+                filter: match (filtered, kind) {
+                    (false, _) => Filter::None,
+                    (true, None) => Filter::Band,
+                    (true, Some(kind)) => {
+                        let noise = unsummed.build_with().map_err(describe)?;
+                        Filter::Octaves(Box::new(Fractal::new(noise, octaves, kind)))
+                    }
+                },
+                infinite,
+                marble,
+            })
+        })();
+        built.map_err(|message| BadField {
+            field: field.get(),
+            message,
         })
     }
 }

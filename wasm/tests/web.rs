@@ -2,7 +2,7 @@
 //! `cargo test -p bandnoise-wasm --target wasm32-unknown-unknown`.
 #![cfg(target_arch = "wasm32")]
 
-use bandnoise_wasm::{Demo, Params};
+use bandnoise_wasm::{BadField, Demo, Params};
 use wasm_bindgen::JsCast;
 use wasm_bindgen_test::*;
 use web_sys::{CanvasRenderingContext2d, HtmlCanvasElement};
@@ -69,6 +69,10 @@ const ARGS: Args = Args {
 
 impl Args<'_> {
     fn build(self) -> Result<Params, String> {
+        self.refused().map_err(|e| e.message())
+    }
+
+    fn refused(self) -> Result<Params, BadField> {
         Params::new(
             self.kind,
             self.number,
@@ -702,4 +706,209 @@ fn gabor_lobes_follow_the_controls() {
         ..ARGS
     });
     assert!(plain == other, "perlin ignores them");
+}
+
+/// Each refusal names the page's field it came from (the id of its element), so the page
+/// shows the message next to it; the core's refusals too, by what they refuse.
+#[wasm_bindgen_test]
+fn refusals_name_their_field() {
+    let fbm = Args {
+        fractal: "fbm",
+        ..ARGS
+    };
+    let gabor = Args {
+        kind: "gabor",
+        ..ARGS
+    };
+    let dots = Args {
+        kind: "polka-dots",
+        ..ARGS
+    };
+    let cases = [
+        (
+            Args {
+                kind: "nope",
+                ..ARGS
+            },
+            "kind",
+        ),
+        (
+            Args {
+                number: "f16",
+                ..ARGS
+            },
+            "number",
+        ),
+        (Args { seed: -1.0, ..ARGS }, "seed"),
+        (Args { zoom: 0.0, ..ARGS }, "zoom"),
+        (
+            Args {
+                zoom: f64::NAN,
+                ..ARGS
+            },
+            "zoom",
+        ),
+        (
+            Args {
+                pan: [f64::INFINITY, 0.0],
+                ..ARGS
+            },
+            "",
+        ),
+        (
+            Args {
+                time: f64::NAN,
+                ..ARGS
+            },
+            "time",
+        ),
+        (
+            Args {
+                period: 0.5,
+                ..ARGS
+            },
+            "period",
+        ),
+        (
+            Args {
+                fractal: "brown",
+                ..ARGS
+            },
+            "fractal",
+        ),
+        (
+            Args {
+                octaves: 40.0,
+                ..fbm
+            },
+            "octaves",
+        ),
+        (
+            Args {
+                kind: "wavelet",
+                period: 4.0,
+                ..ARGS
+            },
+            "period",
+        ),
+        (
+            Args {
+                tiling: "random",
+                ..ARGS
+            },
+            "tiling",
+        ),
+        (
+            Args {
+                kind: "sparse",
+                density: 1e6,
+                ..ARGS
+            },
+            "density",
+        ),
+        (
+            Args {
+                kernel: "box",
+                ..ARGS
+            },
+            "kernel",
+        ),
+        (
+            Args {
+                covariance: "high-pass",
+                ..ARGS
+            },
+            "covariance",
+        ),
+        (
+            Args {
+                frequency: 1e4,
+                ..gabor
+            },
+            "frequency",
+        ),
+        (
+            Args {
+                bandwidth: 1e4,
+                ..gabor
+            },
+            "bandwidth",
+        ),
+        (
+            Args {
+                direction: [0.0, 0.0],
+                ..gabor
+            },
+            "angle",
+        ),
+        (
+            Args {
+                orientation: "sideways",
+                ..ARGS
+            },
+            "orientation",
+        ),
+        (
+            Args {
+                envelope: "square",
+                ..ARGS
+            },
+            "envelope",
+        ),
+        (
+            Args {
+                texture: [7.0, f64::NAN],
+                ..dots
+            },
+            "texture1",
+        ),
+        (
+            Args {
+                texture: [f64::NAN, 7.0],
+                ..dots
+            },
+            "texture2",
+        ),
+        (
+            Args {
+                kind: "multiband",
+                bands: &[0.0; 8],
+                ..ARGS
+            },
+            "bands",
+        ),
+        (
+            Args {
+                warp: 2000.0,
+                ..ARGS
+            },
+            "warp",
+        ),
+        (
+            Args {
+                projected: true,
+                ..ARGS
+            },
+            "projected",
+        ),
+        (
+            Args {
+                filtered: true,
+                ..ARGS
+            },
+            "filtered",
+        ),
+        (
+            Args {
+                infinite: true,
+                ..ARGS
+            },
+            "infinite",
+        ),
+    ];
+    for (args, field) in cases {
+        let e = args.refused().unwrap_err();
+        assert_eq!(e.field(), field, "{}", e.message());
+        assert!(!e.message().is_empty());
+    }
 }
