@@ -39,14 +39,44 @@ const LABELS = {
 };
 
 function fillKinds() {
-  $('kind').replaceChildren(...kinds().split(' ').map((name) => new Option(LABELS[name] || name, name)));
+  const names = kinds().split(' ');
+  $('kind').replaceChildren(...names.map((name) => new Option(LABELS[name] || name, name)));
+  $('compare').replaceChildren(new Option('none', 'none'), ...names.map((name) => new Option(LABELS[name] || name, name)));
+  $('compare').value = 'wavelet';
 }
 
-function params() {
+// The comparison view: the same view of a second noise (by default one wavelet band beside
+// Perlin noise), with its spectrum. Its refusals show in its caption; the main view is not
+// held up by them.
+let demoB;
+function renderCompare() {
+  const kind = $('compare').value;
+  for (const figure of document.querySelectorAll('.compare')) figure.hidden = kind === 'none';
+  if (kind === 'none') return;
+  $('compare-name').textContent = LABELS[kind] || kind;
+  let p;
+  try {
+    p = params(kind, $('compare-projected').checked);
+  } catch (e) {
+    const bad = typeof e === 'object' && e !== null && typeof e.field === 'string';
+    $('compare-message').textContent = bad ? e.message : String(e);
+    if (bad) e.free();
+    return;
+  }
+  demoB.render(p);
+  demoB.draw($('noise-b').getContext('2d'));
+  demoB.draw_spectrum($('spectrum-b').getContext('2d'));
+  p.free();
+  $('compare-message').textContent = '';
+}
+
+// The settings of the main view; the comparison view takes the same with its own kind and
+// projection.
+function params(kind = $('kind').value, projected = $('projected').checked) {
   // An empty period is no period.
   const period = $('period').value.trim() === '' ? 0 : number('period');
   return new Params(
-    $('kind').value, $('number').value, number('seed'), number('zoom'),
+    kind, $('number').value, number('seed'), number('zoom'),
     state.pan[0], state.pan[1], number('time'), period, $('fractal').value,
     number('octaves'), number('lacunarity'), number('gain'),
     new Float32Array(state.bandWeights), $('distribution').value, $('tiling').value,
@@ -57,7 +87,7 @@ function params() {
     // Empty texture settings are the texture's defaults (NaN); an empty warp is none.
     new Float64Array([number('texture1'), number('texture2')]),
     $('warp').value.trim() === '' ? 0 : number('warp'),
-    $('projected').checked, $('filtered').checked, $('infinite').checked, $('palette').value,
+    projected, $('filtered').checked, $('infinite').checked, $('palette').value,
   );
 }
 
@@ -164,6 +194,7 @@ function render() {
   demo.draw_spectrum($('spectrum').getContext('2d'));
   drawHistogram(demo);
   p.free();
+  renderCompare();
   const ms = t1 - t0;
   $('readout').textContent =
     `${ms.toFixed(1)} ms per frame, ${(demo.samples() / ms / 1000).toFixed(1)} Msamples/s ` +
@@ -223,6 +254,7 @@ function wire() {
 
 await init();
 demo = new Demo(SIZE);
+demoB = new Demo(SIZE);
 fillKinds();
 loadState();
 drawBands();

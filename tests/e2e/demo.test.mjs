@@ -2,7 +2,8 @@
 // Serves web/ on 127.0.0.1, then checks what a person would: it renders, every noise differs,
 // each wavelet tiling differs, dragging a band bar changes the spectrum, f32 and fixed point
 // agree, filtering and infinite zoom do what they say, bad input shows a message and leaves the
-// page working, the URL holds the view, and the browser benchmark runs. Screenshots go to target/e2e/.
+// page working, the comparison view shows a second noise, the URL holds the view, and the
+// browser benchmark runs. Screenshots go to target/e2e/.
 // Prints "N passed, N failed" and exits non-zero on any failure.
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -334,6 +335,30 @@ await test('bad input shows a message and leaves the page working', async () => 
   await page.waitForFunction(() => window.bandnoise.lastError === '');
   assert.ok((await canvas('noise')).variance > 200);
   assert.deepEqual(pageErrors, []);
+});
+
+await test('the comparison view: one wavelet band beside Perlin noise, sliced or projected', async () => {
+  await set('kind', 'perlin');
+  assert.equal(await page.inputValue('#compare'), 'wavelet');
+  assert.ok(await page.isVisible('#noise-b'));
+  await page.locator('#noise').scrollIntoViewIfNeeded();
+  await page.screenshot({ path: `${artifacts}/demo-compare.png` });
+  const sliced = await canvas('noise-b');
+  const slicedSpectrum = await canvas('spectrum-b');
+  await tick('compare-projected', true);
+  assert.notEqual((await canvas('noise-b')).hash, sliced.hash, 'projected differs from sliced');
+  assert.notEqual((await canvas('spectrum-b')).hash, slicedSpectrum.hash, 'and so does its spectrum');
+  await page.screenshot({ path: `${artifacts}/demo-compare-projected.png` });
+  // The comparison's refusals show in its caption; the main view renders on.
+  await set('compare', 'perlin');
+  assert.match(await page.textContent('#compare-message'), /projection applies to wavelet/);
+  assert.equal(await message(), '');
+  await tick('compare-projected', false);
+  assert.equal(await page.textContent('#compare-message'), '');
+  await set('compare', 'none');
+  assert.ok(!(await page.isVisible('#noise-b')) && !(await page.isVisible('#spectrum-b')));
+  await set('compare', 'wavelet');
+  assert.equal((await canvas('noise-b')).hash, sliced.hash);
 });
 
 await test('the URL holds the whole view: the copied URL shows the same image', async () => {

@@ -50,10 +50,24 @@ pub(crate) fn fft(re: &mut [f32], im: &mut [f32]) {
 }
 
 /// `log(1 + |F|²)` of a square `side × side` grid, DC in the centre, scaled to 0..=255.
+///
+/// The grid is windowed first by `(1 − u²)²` along each axis (`u` from −1 to 1 across it: a
+/// polynomial close to Hann's `cos²(πu/2)`, without `cos`, which would link libm's argument
+/// reduction), so the frame's edges, where the noise does not wrap, do not leak power along
+/// the axes: without it a cross through DC hides a band-limited noise's empty centre.
 pub(crate) fn log_spectrum(values: &[f32], side: usize, out: &mut [u8]) {
     let mut re: Vec<f32> = values.to_vec();
     let mean = re.iter().sum::<f32>() / re.len() as f32;
-    re.iter_mut().for_each(|v| *v -= mean);
+    let window = |i: usize| {
+        let u = (2 * i + 1) as f32 / side as f32 - 1.0;
+        (1.0 - u * u) * (1.0 - u * u)
+    };
+    for (j, row) in re.chunks_mut(side).enumerate() {
+        let wy = window(j);
+        for (i, v) in row.iter_mut().enumerate() {
+            *v = (*v - mean) * window(i) * wy;
+        }
+    }
     let mut im = vec![0.0f32; re.len()];
     for (r, i) in re.chunks_mut(side).zip(im.chunks_mut(side)) {
         fft(r, i);
