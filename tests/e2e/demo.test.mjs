@@ -3,7 +3,8 @@
 // each wavelet tiling differs, dragging a band bar changes the spectrum, f32 and fixed point
 // agree, filtering and infinite zoom do what they say, bad input shows a message and leaves the
 // page working, the comparison view shows a second noise, the URL holds the view, and the
-// browser benchmark runs. Screenshots go to target/e2e/.
+// browser benchmark runs. Screenshots go to target/e2e/; the README's (readme-*.png) are copied
+// into docs/ by hand when the page changes.
 // Prints "N passed, N failed" and exits non-zero on any failure.
 import { mkdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
@@ -319,6 +320,10 @@ await test('bad input shows a message and leaves the page working', async () => 
       // The same message next to the field.
       assert.equal(await page.textContent(`#error-${field}`), m, `${field}=${JSON.stringify(v)}`);
       assert.equal(await page.locator('.field-error').count(), 1);
+      if (field === 'zoom' && v === '0') {
+        // The README's picture of a refusal (docs/demo-field-error.png is a copy of it).
+        await page.locator('fieldset').first().screenshot({ path: `${artifacts}/readme-field-error.png` });
+      }
     }
     await set(field, good);
     assert.equal(await message(), '', `${field} restored, message stays`);
@@ -349,6 +354,8 @@ await test('the comparison view: one wavelet band beside Perlin noise, sliced or
   assert.notEqual((await canvas('noise-b')).hash, sliced.hash, 'projected differs from sliced');
   assert.notEqual((await canvas('spectrum-b')).hash, slicedSpectrum.hash, 'and so does its spectrum');
   await page.screenshot({ path: `${artifacts}/demo-compare-projected.png` });
+  // The README's picture of the page (docs/demo-compare.png is a copy of it).
+  await page.locator('section.views').screenshot({ path: `${artifacts}/readme-compare.png` });
   // The comparison's refusals show in its caption; the main view renders on.
   await set('compare', 'perlin');
   assert.match(await page.textContent('#compare-message'), /projection applies to wavelet/);
