@@ -48,11 +48,14 @@ function fillKinds() {
 // The comparison view: the same view of a second noise (by default one wavelet band beside
 // Perlin noise), with its spectrum. Its refusals show in its caption; the main view is not
 // held up by them.
-let demoB;
+let demoB, demoS;
 function renderCompare() {
   const kind = $('compare').value;
   for (const figure of document.querySelectorAll('.compare')) figure.hidden = kind === 'none';
-  if (kind === 'none') return;
+  if (kind === 'none') {
+    document.querySelector('.sphere').hidden = true;
+    return;
+  }
   $('compare-name').textContent = LABELS[kind] || kind;
   let p;
   try {
@@ -66,6 +69,12 @@ function renderCompare() {
   demoB.render(p);
   demoB.draw($('noise-b').getContext('2d'));
   demoB.draw_spectrum($('spectrum-b').getContext('2d'));
+  const sphere = $('compare-sphere').checked;
+  document.querySelector('.sphere').hidden = !sphere;
+  if (sphere) {
+    demoS.render_sphere(p);
+    demoS.draw($('sphere').getContext('2d'));
+  }
   p.free();
   $('compare-message').textContent = '';
 }
@@ -255,6 +264,7 @@ function wire() {
 await init();
 demo = new Demo(SIZE);
 demoB = new Demo(SIZE);
+demoS = new Demo(SIZE);
 fillKinds();
 loadState();
 drawBands();

@@ -356,6 +356,22 @@ await test('the comparison view: one wavelet band beside Perlin noise, sliced or
   await page.screenshot({ path: `${artifacts}/demo-compare-projected.png` });
   // The README's picture of the page (docs/demo-compare.png is a copy of it).
   await page.locator('section.views').screenshot({ path: `${artifacts}/readme-compare.png` });
+  // On a sphere (Cook & DeRose's Figure 1): projected onto the tangent planes, or sliced as a
+  // solid texture; off the sphere, the page's background.
+  await tick('compare-sphere', true);
+  assert.ok(await page.isVisible('#sphere'));
+  const onSphere = await canvas('sphere');
+  assert.equal(onSphere.red[0], 250, 'a corner is off the sphere');
+  const disc = onSphere.red.filter((v, i) => ((i % 256) - 127.5) ** 2 + (Math.floor(i / 256) - 127.5) ** 2 < 120 ** 2);
+  const mean = disc.reduce((a, b) => a + b, 0) / disc.length;
+  assert.ok(disc.reduce((a, b) => a + (b - mean) ** 2, 0) / disc.length > 200, 'noise on the sphere');
+  await page.locator('#sphere').screenshot({ path: `${artifacts}/readme-sphere-projected.png` });
+  await tick('compare-projected', false);
+  assert.notEqual((await canvas('sphere')).hash, onSphere.hash, 'sliced differs from projected');
+  await page.locator('#sphere').screenshot({ path: `${artifacts}/readme-sphere-sliced.png` });
+  await tick('compare-projected', true);
+  await tick('compare-sphere', false);
+  assert.ok(!(await page.isVisible('#sphere')));
   // The comparison's refusals show in its caption; the main view renders on.
   await set('compare', 'perlin');
   assert.match(await page.textContent('#compare-message'), /projection applies to wavelet/);

@@ -98,6 +98,61 @@ impl<R: Real> Noise<R, 3> for Projected {
     }
 }
 
+impl Projected {
+    /// The band projected onto the plane through `p` with normal `normal`.
+    fn at<R: Real>(&self, p: [R; 3], normal: [R; 3]) -> R {
+        match self {
+            Projected::Wavelet(n) => n.sample_projected(p, normal),
+            Projected::Multiband(n) => n.sample_projected(p, normal),
+        }
+    }
+}
+
+/// The noise on a sphere that fills the view (its radius half the view's width, its centre at
+/// the view's centre and the time): a solid texture, sampled at each surface point, or with
+/// the page's projection, wavelet noise projected onto each point's tangent plane (Cook &
+/// DeRose §3.7: the band limit kept on the surface, which a solid texture's slices lose).
+/// Pixels off the sphere are NaN. The projected noise is the band or multiband noise alone
+/// (no fractal sum); filtering and infinite zoom apply to the plane view only.
+fn fill_sphere<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
+    let s = p.noise.spec();
+    let projected = match s.base() {
+        Base::Wavelet if p.projected => Some(Projected::Wavelet(
+            Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling()),
+        )),
+        Base::Multiband if p.projected => Some(Projected::Multiband(
+            Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution())
+                .with_tiling(s.tiling()),
+        )),
+        _ => None,
+    };
+    let half = size as f32 / 2.0;
+    let radius = half / p.zoom;
+    for (j, row) in values.chunks_mut(size).enumerate() {
+        let v = 1.0 - (j as f32 + 0.5) / half;
+        for (i, out) in row.iter_mut().enumerate() {
+            let u = (i as f32 + 0.5) / half - 1.0;
+            let w2 = 1.0 - u * u - v * v;
+            if w2 <= 0.0 {
+                *out = f32::NAN;
+                continue;
+            }
+            let n = [u, v, w2.sqrt()];
+            let q = [
+                p.pan[0] + radius * n[0],
+                p.pan[1] - radius * n[1],
+                p.time + radius * n[2],
+            ]
+            .map(R::from_f32);
+            *out = match &projected {
+                Some(band) => band.at(q, n.map(R::from_f32)),
+                None => p.noise.sample(q),
+            }
+            .to_f32();
+        }
+    }
+}
+
 /// The page's zoom (pixels per unit) at which infinite noise shows the band weights as set:
 /// its footprint is this over the zoom, so zooming keeps the bands where they are on screen.
 const INFINITE_AT_ZOOM: f32 = 32.0;
@@ -177,14 +232,33 @@ impl Demo {
         } else {
             fill_any::<f32>(params, self.size, &mut self.values);
         }
-        let n = self.values.len() as f64;
-        let mean = self.values.iter().map(|&v| v as f64).sum::<f64>() / n;
-        let var = self
-            .values
-            .iter()
-            .map(|&v| (v as f64 - mean).powi(2))
-            .sum::<f64>()
-            / n;
+        self.finish(params);
+    }
+
+    /// Renders the noise of `params` on a sphere that fills the frame (sliced as a solid
+    /// texture, or projected onto each point's tangent plane when `params` projects): the
+    /// paper's Figure 1. Pixels off the sphere are the page's background and count in no
+    /// statistic.
+    pub fn render_sphere(&mut self, params: &Params) {
+        if params.fixed {
+            fill_sphere::<I16F16>(params, self.size, &mut self.values);
+        } else {
+            fill_sphere::<f32>(params, self.size, &mut self.values);
+        }
+        self.finish(params);
+    }
+
+    /// Statistics, colours and histogram of the frame's finite values (others: background).
+    fn finish(&mut self, params: &Params) {
+        let finite = || {
+            self.values
+                .iter()
+                .filter(|v| v.is_finite())
+                .map(|&v| v as f64)
+        };
+        let n = finite().count().max(1) as f64;
+        let mean = finite().sum::<f64>() / n;
+        let var = finite().map(|v| (v - mean).powi(2)).sum::<f64>() / n;
         (self.mean, self.std_dev) = (mean as f32, var.sqrt() as f32);
         // Colours: mean ± 3σ spans the palette (a constant frame is mid-grey).
         let scale = if self.std_dev > 0.0 {
@@ -194,6 +268,10 @@ impl Demo {
         };
         self.histogram.iter_mut().for_each(|b| *b = 0);
         for (v, px) in self.values.iter().zip(self.rgba.chunks_mut(4)) {
+            if !v.is_finite() {
+                px[..3].copy_from_slice(&[250, 250, 250]);
+                continue;
+            }
             let z = (v - self.mean) * scale; // in units of 6σ
             let [r, g, b] = color(0.5 + z, params.marble);
             px[..3].copy_from_slice(&[r, g, b]);

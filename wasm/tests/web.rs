@@ -912,3 +912,35 @@ fn refusals_name_their_field() {
         assert!(!e.message().is_empty());
     }
 }
+
+/// The sphere view: off the sphere the page's background, on it noise whose statistics leave
+/// the background out; a wavelet band projected onto the tangent planes differs from its
+/// slices, in f32 and fixed point; other noises are sliced whatever the projection.
+#[wasm_bindgen_test]
+fn the_sphere_view_slices_or_projects() {
+    let ctx = canvas();
+    let sphere = |args: Args| {
+        let mut demo = Demo::new(64).unwrap();
+        demo.render_sphere(&args.build().unwrap());
+        assert!(demo.std_dev() > 0.05 && demo.mean().abs() < 1.0, "{}", demo.std_dev());
+        demo.draw(&ctx).unwrap();
+        ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
+    };
+    for number in ["f32", "fixed"] {
+        let band = Args {
+            kind: "wavelet",
+            number,
+            zoom: 8.0,
+            ..ARGS
+        };
+        let sliced = sphere(band);
+        assert_eq!(&sliced[..3], &[250, 250, 250], "a corner is background");
+        let projected = sphere(Args {
+            projected: true,
+            ..band
+        });
+        assert!(sliced != projected, "{number}: projected differs from sliced");
+    }
+    let perlin = sphere(ARGS);
+    assert_eq!(&perlin[..3], &[250, 250, 250]);
+}
