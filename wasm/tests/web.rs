@@ -922,7 +922,11 @@ fn the_sphere_view_slices_or_projects() {
     let sphere = |args: Args| {
         let mut demo = Demo::new(64).unwrap();
         demo.render_sphere(&args.build().unwrap());
-        assert!(demo.std_dev() > 0.05 && demo.mean().abs() < 1.0, "{}", demo.std_dev());
+        assert!(
+            demo.std_dev() > 0.05 && demo.mean().abs() < 1.0,
+            "{}",
+            demo.std_dev()
+        );
         demo.draw(&ctx).unwrap();
         ctx.get_image_data(0.0, 0.0, 64.0, 64.0).unwrap().data().0
     };
@@ -939,7 +943,10 @@ fn the_sphere_view_slices_or_projects() {
             projected: true,
             ..band
         });
-        assert!(sliced != projected, "{number}: projected differs from sliced");
+        assert!(
+            sliced != projected,
+            "{number}: projected differs from sliced"
+        );
     }
     let perlin = sphere(ARGS);
     assert_eq!(&perlin[..3], &[250, 250, 250]);
