@@ -384,6 +384,39 @@ await test('the comparison view: one wavelet band beside Perlin noise, sliced or
   assert.equal((await canvas('noise-b')).hash, sliced.hash);
 });
 
+await test('frame times of the goal noises (measured)', async () => {
+  // Issue 20's goal: 30 frames per second at 512² for 6-octave Perlin fBm and 6-band wavelet
+  // noise. The page samples 256² point by point today; this prints what it takes (the main
+  // view alone, best of 5 frames).
+  await set('compare', 'none');
+  const best = async () => {
+    let ms = Infinity;
+    for (let k = 0; k < 5; k++) {
+      await set('seed', String(k + 1));
+      ms = Math.min(ms, Number((await page.textContent('#readout')).match(/^([0-9.]+) ms/)[1]));
+    }
+    await set('seed', '0');
+    return ms;
+  };
+  await set('kind', 'perlin');
+  await set('fractal', 'fbm');
+  await set('octaves', '6');
+  const fbm = await best();
+  await set('fractal', 'none');
+  // Six bands, halving (the bars' weights, set as a drag would).
+  const saved = await page.evaluate(() => window.bandnoise.bandWeights.splice(0, 8, 0, 0, 1, 0.5, 0.25, 0.125, 0.0625, 0.03125));
+  await set('kind', 'multiband');
+  const bands = await page.evaluate(() => window.bandnoise.bandWeights.filter((w) => w > 0).length);
+  const multiband = await best();
+  await page.evaluate((w) => window.bandnoise.bandWeights.splice(0, 8, ...w), saved);
+  for (const [name, ms] of [['Perlin fBm, 6 octaves', fbm], [`multiband, ${bands} bands`, multiband]]) {
+    console.log(`     ${name}: ${ms.toFixed(1)} ms per 256² frame (${(1000 / ms).toFixed(0)} frames/s)`);
+  }
+  assert.ok(fbm > 0 && multiband > 0);
+  await set('kind', 'perlin');
+  await set('compare', 'wavelet');
+});
+
 await test('the URL holds the whole view: the copied URL shows the same image', async () => {
   await set('kind', 'gabor');
   await set('seed', '5');
