@@ -61,9 +61,7 @@ function renderCompare() {
   try {
     p = params(kind, $('compare-projected').checked);
   } catch (e) {
-    const bad = typeof e === 'object' && e !== null && typeof e.field === 'string';
-    $('compare-message').textContent = bad ? e.message : String(e);
-    if (bad) e.free();
+    $('compare-message').textContent = refusal(e)[1];
     return;
   }
   demoB.render(p);
@@ -168,6 +166,17 @@ function loadState() {
   }
 }
 
+/** A thrown refusal as [field, message]: a BadField from the wasm side (freed here), or
+ *  anything else by its text, with no field. */
+function refusal(e) {
+  if (typeof e === 'object' && e !== null && typeof e.field === 'string') {
+    const r = [e.field, e.message];
+    e.free();
+    return r;
+  }
+  return ['', String(e)];
+}
+
 // Each refused value's message sits next to its field (the wasm side names the field: the
 // element's id; the pan has none), and in the message line under the page.
 function showError(field, text) {
@@ -189,11 +198,9 @@ function render() {
   try {
     p = params();
   } catch (e) {
-    // A BadField from the wasm side (its field's id and why); anything else by its text.
-    const bad = typeof e === 'object' && e !== null && typeof e.field === 'string';
-    state.lastError = bad ? e.message : String(e);
-    showError(bad ? e.field : '', state.lastError);
-    if (bad) e.free();
+    const [field, text] = refusal(e);
+    state.lastError = text;
+    showError(field, text);
     return false;
   }
   const t0 = performance.now();

@@ -177,22 +177,36 @@ impl<R: Real, const D: usize> Grid<R, D> {
     }
 }
 
-/// Evaluates `noise` over `grid` into `out` (see [`Noise::fill_grid`]).
-pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
-    noise: &N,
+/// Checks `out` against `grid` and calls `row(start, values)` for each row of the grid: the
+/// row's first point and its part of `out` (nothing for an empty grid). The walk every
+/// row-based `fill_grid` shares.
+#[inline]
+pub(crate) fn for_each_row<R: Real, const D: usize>(
     grid: &Grid<R, D>,
     out: &mut [R],
+    mut row: impl FnMut([R; D], &mut [R]),
 ) -> Result<(), Error> {
     check_len(grid.len(), out.len())?;
     let row_len = grid.size[0];
     if row_len == 0 || grid.is_empty() {
         return Ok(());
     }
+    for (r, row_out) in out.chunks_exact_mut(row_len).enumerate() {
+        row(grid.row_start(r), row_out);
+    }
+    Ok(())
+}
+
+/// Evaluates `noise` over `grid` into `out` (see [`Noise::fill_grid`]).
+pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
+    noise: &N,
+    grid: &Grid<R, D>,
+    out: &mut [R],
+) -> Result<(), Error> {
     // Coordinates along axis 0 are the same for every row: compute them once per chunk column.
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
-    for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
-        let start = grid.row_start(row);
+    for_each_row(grid, out, |start, row_out| {
         for (lane, &x) in lanes.iter_mut().zip(&start).skip(1) {
             *lane = [x; LANES];
         }
@@ -203,8 +217,7 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
             noise.sample_lanes(&lanes, &mut values);
             store_lanes(chunk, &values);
         }
-    }
-    Ok(())
+    })
 }
 
 /// Evaluates `noise` at the points `points[0][i], points[1][i], …` into `out[i]`

@@ -27,7 +27,7 @@
 //!
 //! The figures measured for each tiling are in [`Tiling`]'s docs.
 
-use crate::batch::{Grid, LANES, check_len, lane};
+use crate::batch::{Grid, LANES, for_each_row, lane};
 use crate::hash::{CellHash, mix};
 use crate::{Error, Noise, Real};
 
@@ -879,16 +879,9 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
 
     /// Row by row, each row's shared coefficients fetched once (`band/row.rs`).
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
-        check_len(grid.len(), out.len())?;
-        let row_len = grid.size[0];
-        if row_len == 0 || grid.is_empty() {
-            return Ok(());
-        }
-        for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
-            let start = grid.row_start(row);
+        for_each_row(grid, out, |start, row_out| {
             self.fill_row(start, |i| grid.coordinate(0, i), row_out, |o, v| *o = v);
-        }
-        Ok(())
+        })
     }
 
     /// `|Σ_c w(c) n_c| ≤ max |n_c|`: the weights are non-negative and sum to 1, and a

@@ -21,7 +21,7 @@
 
 use heapless::Vec;
 
-use crate::batch::{Grid, check_len};
+use crate::batch::{Grid, for_each_row};
 use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{TileData, Tiling, Wavelet};
@@ -620,14 +620,8 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     /// coefficients fetched once), its weighted value added to the row in `sample`'s order,
     /// then each value finished as `sample` does.
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
-        check_len(grid.len(), out.len())?;
-        let row_len = grid.size[0];
-        if row_len == 0 || grid.is_empty() {
-            return Ok(());
-        }
         let first = self.bands.first;
-        for (row, row_out) in out.chunks_exact_mut(row_len).enumerate() {
-            let start = grid.row_start(row);
+        for_each_row(grid, out, |start, row_out| {
             row_out.fill(R::ZERO);
             for (i, w) in self.scaled.iter().enumerate() {
                 let (band, w) = (first + i as i32, w[D - 2]);
@@ -646,8 +640,7 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
             for v in row_out.iter_mut() {
                 *v = self.finish(*v).0;
             }
-        }
-        Ok(())
+        })
     }
 
     /// Uniform: 1. Gaussian: `Σ_b |w'_b| · max |n_c|` (each band is bounded by the largest
