@@ -518,17 +518,39 @@ impl<'t, T> Wavelet<'t, T> {
         // Sum block by block, each block's coefficients weighted by the B-spline times the
         // block's blend weights (0 beyond its reach; with abutting blocks, 1 or 0): the
         // summing is `add_block` with one lane, so the batch path shares it.
-        let sided: [_; K] = core::array::from_fn(|k| self.sided(&sets[k], crossing, &local0));
+        let mut sided: [_; K] = core::array::from_fn(|k| self.sided(&sets[k], crossing, &local0));
         let members = if crossing == 0 {
             [[0b111; D]; 2] // one block (3D): every coefficient
         } else {
             self.members(crossing, &local0)
         };
+        // A coefficient beyond its block's reach is skipped where multiplying costs more than
+        // a branch (no float unit: ARMv6-M, which has no 64-bit product either, and RV32
+        // without F), and elsewhere weighs 0: adding the `±0` it gives leaves a sum's bits as
+        // they are (`row.rs`, `exclude`). The same bits either way; which is faster where was
+        // measured (bench/README.md, "wavelet sums in columns").
+        let skip = cfg!(any(
+            bandnoise_armv6m,
+            all(target_arch = "riscv32", not(target_feature = "f"))
+        ));
+        if !skip && crossing != 0 {
+            for sides in &mut sided {
+                for (side, bits) in sides.iter_mut().zip(members) {
+                    for (axis, bits) in side.iter_mut().zip(bits) {
+                        for (j, w) in axis.iter_mut().enumerate() {
+                            if bits >> j & 1 == 0 {
+                                *w = [R::ZERO];
+                            }
+                        }
+                    }
+                }
+            }
+        }
         // Every subset of the crossing axes, largest first.
         for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
             let place = self.placement(self.step(block, m));
             axis_offsets(&mut off, &place, m, &local0, n);
-            let mine = |a: usize, j: usize| members[m >> a & 1][a] >> j & 1 == 1;
+            let mine = |a: usize, j: usize| !skip || members[m >> a & 1][a] >> j & 1 == 1;
             for (sum, sides) in sums.iter_mut().zip(&sided) {
                 let weights = core::array::from_fn(|a| &sides[m >> a & 1][a]);
                 self.add_block(sum, &weights, &off, mine);
@@ -802,8 +824,10 @@ impl<T> Wavelet<'_, T> {
 
 impl<T> Wavelet<'_, T> {
     /// Adds each of `L` lanes' coefficients of one block (those `mine(axis, j)` selects),
-    /// weighted, to `sum`: rows along x, then planes along y, then z. `evaluate` is this with
-    /// one lane, so the batch path (16 lanes) sums in the same order by construction.
+    /// weighted, to `sum`: for each x index, its column (lines along z, then along y) weighted
+    /// by its x weight. `evaluate` is this with one lane, so the batch path (16 lanes) sums in
+    /// the same order by construction; x comes last so that a grid's row, along which only x
+    /// changes, can sum each column once for all its samples (`row.rs`).
     #[inline]
     fn add_block<R: Real, const D: usize, const L: usize>(
         &self,
@@ -816,32 +840,32 @@ impl<T> Wavelet<'_, T> {
     {
         let planes = if D == 3 { 3 } else { 1 };
         for (l, s) in sum.iter_mut().enumerate() {
-            for jz in 0..planes {
-                if D == 3 && !mine(D - 1, jz) {
+            for jx in 0..3 {
+                if !mine(0, jx) {
                     continue;
                 }
-                let zoff = if D == 3 { offset[D - 1][jz][l] } else { 0 };
-                let mut plane = R::ZERO;
+                let mut column = R::ZERO;
                 for jy in 0..3 {
                     if !mine(1, jy) {
                         continue;
                     }
-                    let base = zoff + offset[1][jy][l];
-                    let mut row = R::ZERO;
-                    for jx in 0..3 {
-                        if mine(0, jx) {
-                            let c = self.tile.flat(base + offset[0][jx][l]);
-                            // Weights lie in [0, 1], so no product exceeds its other factor.
-                            row = row.saturating_add(weights[0][jx][l].mul_fraction(c));
+                    let base = offset[0][jx][l] + offset[1][jy][l];
+                    let line = if D == 3 {
+                        let mut line = R::ZERO;
+                        for jz in 0..planes {
+                            if mine(D - 1, jz) {
+                                let c = self.tile.flat(base + offset[D - 1][jz][l]);
+                                line = line.saturating_add(weights[D - 1][jz][l].mul_fraction(c));
+                            }
                         }
-                    }
-                    plane = plane.saturating_add(weights[1][jy][l].mul_fraction(row));
+                        line
+                    } else {
+                        self.tile.flat(base)
+                    };
+                    // Weights lie in [0, 1], so no product exceeds its other factor.
+                    column = column.saturating_add(weights[1][jy][l].mul_fraction(line));
                 }
-                *s = s.saturating_add(if D == 3 {
-                    weights[D - 1][jz][l].mul_fraction(plane)
-                } else {
-                    plane
-                });
+                *s = s.saturating_add(weights[0][jx][l].mul_fraction(column));
             }
         }
     }

@@ -1,20 +1,20 @@
 //! One row of a grid through a wavelet band, bit for bit as [`Wavelet::evaluate`] samples each
-//! point, with the coefficient fetches the row's samples share done once.
+//! point, with the work the row's samples share done once.
 //!
 //! Along a row only x changes, so every sample reads the same three coefficient indices along
 //! y (and z), in the same blocks, with the same weights; neighbouring samples read mostly the
-//! same indices along x. A sample's sum is `evaluate`'s (block by block, rows along x, then
-//! planes along y, then z, with the same saturating operations), but the 3 (3D: 9) tile
-//! coefficients at one x index of one block, for every block the row's y and z reach, are
-//! fetched once into a small cache of such columns, and each block's placement once into a
-//! cache of blocks. Fetching a coefficient (a placement hash, the block's cyclic shift and
-//! orientation per axis, a remainder) is most of a point sample's cost under
+//! same indices along x. A sample's sum is `evaluate`'s: block by block, and in each block, for
+//! each x index, the column of 3 (3D: 9) coefficients summed along z, then y, weighted by its x
+//! weight (`add_block`, with the same saturating operations). The column's sum involves only
+//! y and z, so the row computes it once per x index and block, into a small cache of columns,
+//! and each block's placement once, into a cache of blocks; a sample then adds three weighted
+//! columns per block it reaches. Fetching a coefficient (a placement hash, the block's cyclic
+//! shift and orientation per axis, a remainder) is most of a point sample's cost under
 //! [`Tiling::Blended`](super::Tiling::Blended); the row pays it once per column and block.
 //!
-//! Both caches are fixed arrays on the stack (about 3 KB for `f32` and I16F16, 5.5 KB for
-//! `f64`): no allocation, and any order of x values is correct (a grid with a negative or zero
-//! step, or one that jumps between blocks), only slower when x moves by more than the cache
-//! holds.
+//! Both caches are fixed arrays on the stack (about 1.5 KB): no allocation, and any order of
+//! x values is correct (a grid with a negative or zero step, or one that jumps between
+//! blocks), only slower when x moves by more than the cache holds.
 
 use super::{AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, members};
 use crate::Real;
@@ -37,14 +37,15 @@ struct Block {
     base: [[[usize; 3]; 3]; 4],
 }
 
-/// The column cache: slot `k` holds the tile coefficients at one x index of one block along x
-/// (`keys[k]`), `values[4k + s][jy][jz]` for each subset `s` of the crossing y/z axes and the
-/// row's y and z coefficients.
+/// The column cache: slot `k` holds the column at one x index of one block along x
+/// (`keys[k]`): `values[4k + s]` for each subset `s` of the crossing y/z axes, the block's
+/// 3 (3D: 9) coefficients there weighted by the row's y and z weights as `add_block` sums
+/// them.
 struct Columns<R> {
     /// `key(g, b)` of the column each slot holds; initially keys that map to other slots, so
     /// no lookup matches them.
     keys: [u64; SLOTS],
-    values: [[[R; 3]; 3]; 4 * SLOTS],
+    values: [R; 4 * SLOTS],
 }
 
 /// The slot of x index `g` in block `b` (distinct for the three x indices and two blocks of
@@ -134,7 +135,7 @@ impl<T> Wavelet<'_, T> {
                 // x index k/2 + 1 and block parity k & 1: the slot after k's pair.
                 slot(((k / 2 + 1) % (SLOTS / 2)) as i32, (k & 1) as i32).1
             }),
-            values: [[[R::ZERO; 3]; 3]; 4 * SLOTS],
+            values: [R::ZERO; 4 * SLOTS],
         };
         let mut span = Span::<R> {
             first: None,
@@ -143,11 +144,35 @@ impl<T> Wavelet<'_, T> {
             count: 0,
             blocks: [(0, [0; 3]); 8],
         };
-        let planes = if D == 3 { 3 } else { 1 };
         for (i, o) in out.iter_mut().enumerate() {
             let (first, weights) = bspline3(x(i));
             if span.first != Some(first) {
-                self.span_setup(&mut span, &row, first, &mut blocks, &mut columns, n, h);
+                let (bx, l0, two) = axis_span(first, n, h);
+                if two || row.crossing != 0 {
+                    let at = (bx, l0, two);
+                    self.span_setup(&mut span, &row, first, at, &mut blocks, &mut columns, n);
+                } else {
+                    // Most spans: one block, three columns, nothing crossing.
+                    let mut at = [0u8; 3];
+                    for (jx, at) in at.iter_mut().enumerate() {
+                        let (slot, key) = slot(first.wrapping_add(jx as i32), bx);
+                        if columns.keys[slot] != key {
+                            self.fetch_column(
+                                &mut columns,
+                                slot,
+                                key,
+                                &mut blocks,
+                                &row,
+                                bx,
+                                l0 + jx + n,
+                                n,
+                            );
+                        }
+                        *at = (4 * slot) as u8;
+                    }
+                    (span.first, span.two, span.count) = (Some(first), false, 1);
+                    span.blocks[0] = (0, at);
+                }
             }
             // The x weights in each block: `evaluate`'s (`sided`), with the coefficients
             // outside a block weighing 0 (`exclude`). Factors are in [0, 1]: `mul_fraction`
@@ -160,25 +185,9 @@ impl<T> Wavelet<'_, T> {
             };
             let mut sum = R::ZERO;
             for &(mx, at) in span.blocks.iter().take(span.count) {
-                let cols = at.map(|k| &columns.values[k as usize % (4 * SLOTS)]);
-                let s = at[0] as usize & 3;
-                let wx = &xs[mx as usize & 1];
-                let wy = &row.sides[s & 1][1];
-                let wz = &row.sides[s >> (D - 2) & 1][D - 1];
-                for jz in 0..planes {
-                    let mut plane = R::ZERO;
-                    for (jy, wy) in wy.iter().enumerate() {
-                        let mut line = R::ZERO;
-                        for (col, &wx) in cols.iter().zip(wx) {
-                            line = line.saturating_add(wx.mul_fraction(col[jy][jz]));
-                        }
-                        plane = plane.saturating_add(wy[0].mul_fraction(line));
-                    }
-                    sum = sum.saturating_add(if D == 3 {
-                        wz[jz][0].mul_fraction(plane)
-                    } else {
-                        plane
-                    });
+                for (&k, &wx) in at.iter().zip(&xs[mx as usize & 1]) {
+                    let column = columns.values[k as usize % (4 * SLOTS)];
+                    sum = sum.saturating_add(wx.mul_fraction(column));
                 }
             }
             put(o, sum.canonical());
@@ -199,14 +208,14 @@ impl<T> Wavelet<'_, T> {
         span: &mut Span<R>,
         row: &Row<R, D>,
         first: i32,
+        (bx, l0, two): (i32, usize, bool),
         blocks: &mut [Block; BLOCKS],
         columns: &mut Columns<R>,
         n: usize,
-        h: usize,
     ) where
         T: TileData<D>,
     {
-        let (bx, l0, two) = axis_span(first, n, h);
+        let h = self.half_width::<D>();
         span.first = Some(first);
         span.two = two;
         span.count = 0;
@@ -225,40 +234,78 @@ impl<T> Wavelet<'_, T> {
                 }
             }
         }
-        let crossing = row.crossing | two as usize;
-        for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
-            let mx = m & 1;
+        // The three columns of each block along x, each fetched (for every subset of the
+        // crossing y/z axes at once) if the cache does not hold it.
+        let mut at = [[0u8; 3]; 2];
+        for (mx, at) in at.iter_mut().enumerate().take(1 + two as usize) {
             let b = bx.wrapping_add(mx as i32);
-            let s = (m >> 1) & 3;
-            let mut at = [0u8; 3];
             for (jx, at) in at.iter_mut().enumerate() {
                 let (slot, key) = slot(first.wrapping_add(jx as i32), b);
                 if columns.keys[slot] != key {
-                    let block = &mut blocks[(b & 1) as usize % BLOCKS];
-                    if block.key != Some(b) {
-                        self.block_setup(block, row, b, n);
-                    }
-                    columns.keys[slot] = key;
-                    let yz = row.crossing >> 1;
                     // The local index in block b, plus n: l0 + jx − n·mx + n.
                     let l_plus_n = l0 + jx + n - n * mx;
-                    for t in (0..4usize).filter(|t| t & !yz == 0) {
-                        let x = block.x[t & 3].offset(l_plus_n, n);
-                        let values = &mut columns.values[(4 * slot + (t & 3)) % (4 * SLOTS)];
-                        for (values, base) in values.iter_mut().zip(&block.base[t & 3]) {
-                            let planes = if D == 3 { 3 } else { 1 };
-                            for (v, &b) in values.iter_mut().zip(base).take(planes) {
-                                *v = self.tile.flat(x + b);
-                            }
-                        }
-                    }
+                    self.fetch_column(columns, slot, key, blocks, row, b, l_plus_n, n);
                 }
-                *at = (4 * slot + s) as u8;
+                *at = (4 * slot) as u8;
             }
+        }
+        let crossing = row.crossing | two as usize;
+        for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
+            let (mx, s) = (m & 1, (m >> 1) & 3);
             if let Some(entry) = span.blocks.get_mut(span.count) {
-                *entry = (mx as u8, at);
+                *entry = (mx as u8, at[mx].map(|k| k + s as u8));
                 span.count += 1;
             }
+        }
+    }
+
+    /// Fetches into `slot` (now `key`'s) the column at local index `l_plus_n − n` of block
+    /// `b` along x, for every subset of the row's crossing y/z axes, setting the block up
+    /// first if the block cache does not hold it.
+    #[allow(
+        clippy::too_many_arguments,
+        reason = "the row's state, passed apart to borrow"
+    )]
+    #[inline]
+    fn fetch_column<R: Real, const D: usize>(
+        &self,
+        columns: &mut Columns<R>,
+        slot: usize,
+        key: u64,
+        blocks: &mut [Block; BLOCKS],
+        row: &Row<R, D>,
+        b: i32,
+        l_plus_n: usize,
+        n: usize,
+    ) where
+        T: TileData<D>,
+    {
+        let block = &mut blocks[(b & 1) as usize % BLOCKS];
+        if block.key != Some(b) {
+            self.block_setup(block, row, b, n);
+        }
+        columns.keys[slot] = key;
+        let yz = row.crossing >> 1;
+        for t in (0..4usize).filter(|t| t & !yz == 0) {
+            let x = block.x[t & 3].offset(l_plus_n, n);
+            // `add_block`'s column: lines along z, then along y, each coefficient outside
+            // the block's reach weighing 0 (`exclude`).
+            let wy = &row.sides[t & 1][1];
+            let wz = &row.sides[t >> (D - 2) & 1][D - 1];
+            let mut column = R::ZERO;
+            for (base, wy) in block.base[t & 3].iter().zip(wy) {
+                let line = if D == 3 {
+                    let mut line = R::ZERO;
+                    for (&b, wz) in base.iter().zip(wz) {
+                        line = line.saturating_add(wz[0].mul_fraction(self.tile.flat(x + b)));
+                    }
+                    line
+                } else {
+                    self.tile.flat(x + base[0])
+                };
+                column = column.saturating_add(wy[0].mul_fraction(line));
+            }
+            columns.values[(4 * slot + (t & 3)) % (4 * SLOTS)] = column;
         }
     }
 
