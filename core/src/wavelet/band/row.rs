@@ -148,11 +148,12 @@ impl<T> Wavelet<'_, T> {
             let (first, weights) = bspline3(x(i));
             if span.first != Some(first) {
                 let (bx, l0, two) = axis_span(first, n, h);
-                if two || row.crossing != 0 {
+                if two {
                     let at = (bx, l0, two);
                     self.span_setup(&mut span, &row, first, at, &mut blocks, &mut columns, n);
                 } else {
-                    // Most spans: one block, three columns, nothing crossing.
+                    // Most spans: one block along x, three columns (each holding every
+                    // subset of the crossing y/z axes).
                     let mut at = [0u8; 3];
                     for (jx, at) in at.iter_mut().enumerate() {
                         let (slot, key) = slot(first.wrapping_add(jx as i32), bx);
@@ -170,8 +171,19 @@ impl<T> Wavelet<'_, T> {
                         }
                         *at = (4 * slot) as u8;
                     }
-                    (span.first, span.two, span.count) = (Some(first), false, 1);
-                    span.blocks[0] = (0, at);
+                    (span.first, span.two) = (Some(first), false);
+                    // Every subset of the crossing y/z axes, largest first (`block_sums`).
+                    let yz = row.crossing >> 1 & 3;
+                    let (mut s, mut count) = (yz, 0);
+                    loop {
+                        span.blocks[count % 8] = (0, at.map(|k| k + s as u8));
+                        count += 1;
+                        if s == 0 {
+                            break;
+                        }
+                        s = (s - 1) & yz;
+                    }
+                    span.count = count;
                 }
             }
             // The x weights in each block: `evaluate`'s (`sided`), with the coefficients
