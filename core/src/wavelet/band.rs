@@ -526,12 +526,14 @@ impl<'t, T> Wavelet<'t, T> {
         };
         // A coefficient beyond its block's reach is skipped where multiplying costs more than
         // a branch (no float unit: ARMv6-M, which has no 64-bit product either, and RV32
-        // without F), and elsewhere weighs 0: adding the `±0` it gives leaves a sum's bits as
-        // they are (`row.rs`, `exclude`). The same bits either way; which is faster where was
-        // measured (bench/README.md, "wavelet sums in columns").
+        // without F; and wasm32, whose engines keep the branches cheap), and elsewhere weighs
+        // 0: adding the `±0` it gives leaves a sum's bits as they are (`row.rs`, `exclude`).
+        // The same bits either way; which is faster where was measured (bench/README.md,
+        // "wavelet sums in columns").
         let skip = cfg!(any(
             bandnoise_armv6m,
-            all(target_arch = "riscv32", not(target_feature = "f"))
+            all(target_arch = "riscv32", not(target_feature = "f")),
+            target_arch = "wasm32"
         ));
         if !skip && crossing != 0 {
             for sides in &mut sided {
