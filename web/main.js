@@ -39,10 +39,19 @@ const LABELS = {
 };
 
 function fillKinds() {
-  const names = kinds().split(' ');
-  $('kind').replaceChildren(...names.map((name) => new Option(LABELS[name] || name, name)));
-  $('compare').replaceChildren(new Option('none', 'none'), ...names.map((name) => new Option(LABELS[name] || name, name)));
+  const options = () => kinds().split(' ').map((name) => new Option(LABELS[name] || name, name));
+  $('kind').replaceChildren(...options());
+  $('compare').replaceChildren(new Option('none', 'none'), ...options());
   $('compare').value = 'wavelet';
+}
+
+// A refused comparison leaves no picture of the settings before it: its canvases go blank.
+function blankCompare() {
+  for (const id of ['noise-b', 'spectrum-b', 'sphere']) {
+    const ctx = $(id).getContext('2d');
+    ctx.fillStyle = '#fafafa';
+    ctx.fillRect(0, 0, ctx.canvas.width, ctx.canvas.height);
+  }
 }
 
 // The comparison view: the same view of a second noise (by default one wavelet band beside
@@ -62,6 +71,7 @@ function renderCompare() {
     p = params(kind, $('compare-projected').checked);
   } catch (e) {
     $('compare-message').textContent = refusal(e)[1];
+    blankCompare();
     return;
   }
   demoB.render(p);

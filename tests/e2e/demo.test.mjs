@@ -376,6 +376,7 @@ await test('the comparison view: one wavelet band beside Perlin noise, sliced or
   await set('compare', 'perlin');
   assert.match(await page.textContent('#compare-message'), /projection applies to wavelet/);
   assert.equal(await message(), '');
+  assert.equal((await canvas('noise-b')).variance, 0, 'a refused comparison shows no stale picture');
   await tick('compare-projected', false);
   assert.equal(await page.textContent('#compare-message'), '');
   await set('compare', 'none');
