@@ -903,7 +903,8 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
         self.evaluate_lanes(p, out);
     }
 
-    /// Row by row, each row's shared coefficients fetched once (`band/row.rs`).
+    /// Row by row, each column of coefficients the row's samples share summed once
+    /// (`band/row.rs`).
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
         for_each_row(grid, out, |start, row_out| {
             self.fill_row(start, |i| grid.coordinate(0, i), row_out, |o, v| *o = v);
