@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
-# Builds the browser demo and the benchmark page into web/: installs what is missing (the pinned
-# Rust toolchain and targets, wasm-bindgen-cli at the version Cargo.lock pins, the npm tools in
-# tests/e2e), builds the two wasm crates (release, simd128), runs wasm-bindgen (--target web) and
-# wasm-opt on each, and copies the simplex-noise peer for the benchmark page. Prints the
-# modules' sizes.
+# Builds the browser demo and the benchmark page into web/: installs what is missing (the
+# pinned Rust toolchain and targets, wasm-bindgen-cli at the version Cargo.lock pins, the npm
+# tools in tests/e2e), builds the two wasm crates (release, simd128), runs wasm-bindgen
+# (--target web) and wasm-opt on each, builds the npm package's module into web/npm (the demo
+# samples its plane views through it), and copies the simplex-noise peer for the benchmark
+# page. Prints the modules' sizes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -42,7 +43,15 @@ for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
         --enable-mutable-globals --enable-multivalue --enable-reference-types \
         "$dir/${name}_bg.wasm" -o "$dir/${name}_bg.wasm"
 done
+# The npm package's module (web/npm: bindings/wasm, the build scripts/npm.sh packs), which the
+# demo's plane views sample through by its batch kernels (opt-level 3, no wasm-opt: see
+# scripts/npm.sh), loaded after the demo's first frame.
+cargo build -p bandnoise-js --profile web --target wasm32-unknown-unknown
+rm -rf web/npm
+wasm-bindgen target/wasm32-unknown-unknown/web/bandnoise_js.wasm --target web --out-dir web/npm --no-typescript
+cp bindings/wasm/js/index.js web/npm/
 mkdir -p web/vendor
 cp tests/e2e/node_modules/simplex-noise/dist/esm/simplex-noise.js web/vendor/
 echo "web/pkg/bandnoise_wasm_bg.wasm (demo): $(wc -c < web/pkg/bandnoise_wasm_bg.wasm) bytes after wasm-opt"
 echo "web/pkg-bench/bandnoise_wasm_bench_bg.wasm (benchmark page): $(wc -c < web/pkg-bench/bandnoise_wasm_bench_bg.wasm) bytes after wasm-opt"
+echo "web/npm/bandnoise_js_bg.wasm (the npm package's, for the batch path): $(wc -c < web/npm/bandnoise_js_bg.wasm) bytes"

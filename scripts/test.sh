@@ -48,10 +48,11 @@ bash scripts/build-web.sh
 # The module's budget: a page that loads fast (issue 4's 150,000, raised to 190,000 when
 # issue 19 put OpenSimplex2/2S and the textures in the demo, to 195,000 for the textures'
 # settings and the warp control, to 205,000 for flow noise, to 210,000 for issue 20's
-# per-field messages, windowed spectrum and sphere view; ARCHITECTURE.md).
+# per-field messages, windowed spectrum and sphere view, to 216,000 for its batch path's
+# descriptions; ARCHITECTURE.md).
 size=$(wc -c < web/pkg/bandnoise_wasm_bg.wasm)
-if [ "$size" -gt 210000 ]; then
-    echo "error: the demo's wasm module is $size bytes, over its budget of 210,000 (README, Browser)" >&2
+if [ "$size" -gt 216000 ]; then
+    echo "error: the demo's wasm module is $size bytes, over its budget of 216,000 (README, Browser)" >&2
     exit 1
 fi
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown

@@ -1,13 +1,24 @@
-// The bandnoise demo page: controls → wasm Params → Demo.render → canvases.
+// The bandnoise demo page: controls → wasm Params → a frame of values → Demo → canvases.
+// The values come from the npm package's batch path (web/npm: `fillGrid`, the crate's row
+// kernels) once it has loaded, after the first frame, wherever the settings have a description
+// (`Params.batch_text`: f32, not filtered, projected or infinitely zoomed); else from the demo's
+// own module, point by point (`Demo.render`). Both give the same frame, bit for bit (the
+// end-to-end test compares them for every noise).
 import init, { Demo, Params, kinds } from './pkg/bandnoise_wasm.js';
 
-const SIZE = 256;
+// Pixels across a view: its canvas's backing store, shown at as many CSS pixels.
+const SIZE = 512;
 const $ = (id) => document.getElementById(id);
 const state = {
   pan: [0, 0],
   bandWeights: [0, 0, 0.2, 0.5, 1, 0.5, 0.25, 0.12], // bands -3..4
   renders: 0,
   lastError: '',
+  // How the last main view was sampled ('batch' or 'point') and what its frame took (ms).
+  path: '',
+  frameMs: 0,
+  // Set by the end-to-end test to compare the two paths.
+  pointOnly: false,
 };
 window.bandnoise = state; // for the end-to-end test
 
@@ -58,6 +69,35 @@ function blankCompare() {
 // Perlin noise), with its spectrum. Its refusals show in its caption; the main view is not
 // held up by them.
 let demoB, demoS;
+
+// The batch path: the npm package once loaded, the noise each view last built from its
+// description (rebuilt when the description changes), and the frame's values.
+let batch = null;
+const batchNoises = new Map();
+const values = new Float32Array(SIZE * SIZE);
+
+/** Renders `p`'s plane view into `demo`: by the batch path where it applies, else by the
+ *  demo's module. Returns the path taken. */
+function renderView(demo, p, view) {
+  const text = batch && !state.pointOnly ? p.batch_text() : undefined;
+  if (text === undefined) {
+    demo.render(p);
+    return 'point';
+  }
+  const dims = p.dims;
+  let held = batchNoises.get(view);
+  if (!held || held.text !== text || held.dims !== dims) {
+    held?.noise.free();
+    held = { text, dims, noise: batch.fromSpec(text, dims) };
+    batchNoises.set(view, held);
+  }
+  // The grid the demo's module would sample (its first pixel, the time and the step).
+  const [x, y, t, step] = demo.grid(p);
+  if (dims === 3) held.noise.fillGrid(values, [x, y, t], [step, step, 1], [SIZE, SIZE, 1]);
+  else held.noise.fillGrid(values, [x, y], [step, step], [SIZE, SIZE]);
+  demo.render_values(p, values);
+  return 'batch';
+}
 function renderCompare() {
   const kind = $('compare').value;
   for (const figure of document.querySelectorAll('.compare')) figure.hidden = kind === 'none';
@@ -74,7 +114,7 @@ function renderCompare() {
     blankCompare();
     return;
   }
-  demoB.render(p);
+  renderView(demoB, p, 'compare');
   demoB.draw($('noise-b').getContext('2d'));
   demoB.draw_spectrum($('spectrum-b').getContext('2d'));
   const sphere = $('compare-sphere').checked;
@@ -213,17 +253,19 @@ function render() {
     showError(field, text);
     return false;
   }
+  // The whole frame: sampling, colours, spectrum, histogram, and the comparison view.
   const t0 = performance.now();
-  demo.render(p);
+  state.path = renderView(demo, p, 'main');
   demo.draw($('noise').getContext('2d'));
-  const t1 = performance.now();
   demo.draw_spectrum($('spectrum').getContext('2d'));
   drawHistogram(demo);
   p.free();
   renderCompare();
-  const ms = t1 - t0;
+  const ms = performance.now() - t0;
+  state.frameMs = ms;
   $('readout').textContent =
-    `${ms.toFixed(1)} ms per frame, ${(demo.samples() / ms / 1000).toFixed(1)} Msamples/s ` +
+    `${ms.toFixed(1)} ms per frame (${state.path === 'batch' ? 'batch' : 'point by point'}), ` +
+    `${(demo.samples() / ms / 1000).toFixed(1)} Msamples/s ` +
     `(mean ${demo.mean().toFixed(3)}, σ ${demo.std_dev().toFixed(3)})`;
   showError('', '');
   state.lastError = '';
@@ -247,7 +289,7 @@ function wire() {
   canvas.addEventListener('pointerdown', (e) => { dragging = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
   canvas.addEventListener('pointermove', (e) => {
     if (!dragging) return;
-    const zoom = number('zoom') * 2; // the canvas is shown at twice its size
+    const zoom = number('zoom'); // the canvas is shown at its size
     if (!(zoom > 0)) return;
     state.pan[0] -= (e.clientX - dragging[0]) / zoom;
     state.pan[1] -= (e.clientY - dragging[1]) / zoom;
@@ -288,3 +330,11 @@ drawBands();
 wire();
 render();
 state.ready = true;
+// The batch path after the first frame: a larger module, compiled while the page is in use.
+import('./npm/index.js').then((m) => {
+  batch = m;
+  state.batch = true;
+  render();
+}, (e) => {
+  state.batchError = String(e);
+});

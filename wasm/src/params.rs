@@ -270,6 +270,34 @@ fn describe(e: Error) -> String {
 
 #[wasm_bindgen]
 impl Params {
+    /// The plane view's noise as a description, for a batch sampler (the page passes it to
+    /// the npm package's `fromSpec` in [`dims`](Self::dims) dimensions and fills
+    /// [`Demo::grid`](crate::Demo::grid) with it): the frame [`Demo::render`](crate::Demo::render)
+    /// would sample, bit for bit. `None` where the view needs this module's own sampling:
+    /// fixed point, filtering, infinite zoom and projection.
+    pub fn batch_text(&self) -> Option<String> {
+        if self.fixed || self.infinite || self.projected || !matches!(self.filter, Filter::None) {
+            return None;
+        }
+        match &self.noise {
+            Sampled::Solid(n) => Some(n.spec().to_string()),
+            Sampled::Flow(spec, _) => spec
+                .with_angle(spec.flow()[0] + self.time / FLOW_TIME_PER_TURN)
+                .ok()
+                .map(|s| s.to_string()),
+        }
+    }
+
+    /// The dimensions of [`batch_text`](Self::batch_text)'s noise: 2 for flow noise (time
+    /// turns it), 3 for the others (time is their third axis).
+    #[wasm_bindgen(getter)]
+    pub fn dims(&self) -> u32 {
+        match self.noise {
+            Sampled::Solid(_) => 3,
+            Sampled::Flow(..) => 2,
+        }
+    }
+
     /// Checks and builds the settings.
     ///
     /// `period` is the period in cells of every axis (time included, so an animation loops),

@@ -5,6 +5,8 @@ use bandnoise::spec::{Base, Tiles};
 use bandnoise::wavelet::{
     DEFAULT_TILE_SEED, Multiband, QuantizedTile2, QuantizedTile3, TILE2_I16, Tile3, Wavelet,
 };
+use std::sync::OnceLock;
+
 use bandnoise::{FilteredNoise, I16F16, Noise, ProjectedNoise, Real};
 use wasm_bindgen::Clamped;
 use wasm_bindgen::prelude::*;
@@ -14,26 +16,37 @@ use crate::fft::log_spectrum;
 use crate::palette::color;
 use crate::params::{Filter, Params};
 
-/// The demo's 3D wavelet tile: 16³ `i16` coefficients (8 KiB) rather than the crate's 128 KiB
-/// default, to keep the module small; hashed orientations hide its repetition.
-static WEB_TILE3: QuantizedTile3<16> =
-    QuantizedTile3::quantize(&Tile3::generate(DEFAULT_TILE_SEED));
+/// The demo's 3D wavelet tile: the crate's `TILE3_I16` (32³ `i16` coefficients, the tile of
+/// the npm package that samples the plane views), generated when a wavelet noise first needs
+/// it rather than stored in the module: its 64 KiB would not fit the module's budget, its
+/// generator's code takes 4 KB. `Tile3::generate` is a `const fn` of `f32` arithmetic, so the
+/// tile equals the stored one bit for bit (the end-to-end test compares the two paths' frames).
+static WEB_TILE3: OnceLock<QuantizedTile3<32>> = OnceLock::new();
 
-/// The wavelet tiles the demo's specs are built over: the crate's quantized 2D tile and the
-/// small 3D one.
+fn web_tile3() -> &'static QuantizedTile3<32> {
+    WEB_TILE3.get_or_init(|| QuantizedTile3::quantize(&Tile3::generate(DEFAULT_TILE_SEED)))
+}
+
+/// The wavelet tiles the demo's specs are built over: the crate's quantized tiles
+/// (`I16Tiles`'s), the 3D one generated at its first use.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct WebTiles;
 
 impl Tiles for WebTiles {
     type Two = QuantizedTile2<64>;
-    type Three = QuantizedTile3<16>;
+    type Three = QuantizedTile3<32>;
     fn two() -> &'static QuantizedTile2<64> {
         &TILE2_I16
     }
-    fn three() -> &'static QuantizedTile3<16> {
-        &WEB_TILE3
+    fn three() -> &'static QuantizedTile3<32> {
+        web_tile3()
     }
 }
+
+/// The side of the spectrum's square: the frame's centre, at most this many pixels across
+/// (a 512² transform takes 14 ms in Chromium here, a 256² one 3 ms: the spectrum's
+/// frequency range is the frame's, its resolution half that of the whole frame).
+pub const SPECTRUM_SIDE: usize = 256;
 
 /// Histogram bins over `[-4σ, 4σ]` of the frame's standardised values.
 pub const HISTOGRAM_BINS: usize = 64;
@@ -57,15 +70,25 @@ fn fill<R: Real, N: Noise<R, 3>>(noise: &N, p: &Params, size: usize, values: &mu
     fill_with(&|q| noise.sample(q), p, size, values)
 }
 
+/// The plane view's grid of `size × size` pixels: its first pixel's `(x, y)` and the step
+/// between pixels, in `f32`, centred on the pan. Pixel `(i, j)` is at `origin + (i, j)·step`
+/// computed in `f32`, as `bandnoise::Grid` computes it, so the batch path (the npm package's
+/// `fillGrid` on this grid) and [`fill_with`] sample the same points.
+fn plane(p: &Params, size: usize) -> ([f32; 2], f32) {
+    let step = 1.0 / p.zoom;
+    let half = size as f32 / 2.0;
+    ([p.pan[0] - half * step, p.pan[1] - half * step], step)
+}
+
 /// [`fill`] through a `dyn` closure: one loop per number type rather than one per noise type
 /// keeps the module small, for an indirect call per sample.
 fn fill_with<R: Real>(sample: &dyn Fn([R; 3]) -> R, p: &Params, size: usize, values: &mut [f32]) {
-    let half = size as f32 / 2.0;
+    let (origin, step) = plane(p, size);
     let t = R::from_f32(p.time);
     for (j, row) in values.chunks_mut(size).enumerate() {
-        let y = R::from_f32(p.pan[1] + (j as f32 - half) / p.zoom);
+        let y = R::from_f32(origin[1] + j as f32 * step);
         for (i, v) in row.iter_mut().enumerate() {
-            let x = R::from_f32(p.pan[0] + (i as f32 - half) / p.zoom);
+            let x = R::from_f32(origin[0] + i as f32 * step);
             *v = sample([x, y, t]).to_f32();
         }
     }
@@ -78,8 +101,8 @@ fn fill_with<R: Real>(sample: &dyn Fn([R; 3]) -> R, p: &Params, size: usize, val
     reason = "one value per frame, on the stack"
 )]
 enum Projected {
-    Wavelet(Wavelet<'static, QuantizedTile3<16>>),
-    Multiband(Multiband<'static, QuantizedTile3<16>>),
+    Wavelet(Wavelet<'static, QuantizedTile3<32>>),
+    Multiband(Multiband<'static, QuantizedTile3<32>>),
 }
 
 impl<R: Real> Noise<R, 3> for Projected {
@@ -118,10 +141,10 @@ fn fill_sphere<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
     let s = p.noise.spec();
     let projected = match s.base() {
         Base::Wavelet if p.projected => Some(Projected::Wavelet(
-            Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling()),
+            Wavelet::new(s.seed(), web_tile3()).with_tiling(s.tiling()),
         )),
         Base::Multiband if p.projected => Some(Projected::Multiband(
-            Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution())
+            Multiband::new(s.seed(), web_tile3(), s.bands(), s.distribution())
                 .with_tiling(s.tiling()),
         )),
         _ => None,
@@ -155,16 +178,16 @@ fn fill_sphere<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
 
 /// The page's zoom (pixels per unit) at which infinite noise shows the band weights as set:
 /// its footprint is this over the zoom, so zooming keeps the bands where they are on screen.
-const INFINITE_AT_ZOOM: f32 = 32.0;
+const INFINITE_AT_ZOOM: f32 = 64.0;
 
 fn fill_any<R: Real>(p: &Params, size: usize, values: &mut [f32]) {
     let s = p.noise.spec();
     // The pixel's footprint in noise space: one pixel along x and along y, none along time.
     let step = R::from_f32(1.0 / p.zoom);
     let (dx, dy) = ([step, R::ZERO, R::ZERO], [R::ZERO, step, R::ZERO]);
-    let wavelet = || Wavelet::new(s.seed(), &WEB_TILE3).with_tiling(s.tiling());
+    let wavelet = || Wavelet::new(s.seed(), web_tile3()).with_tiling(s.tiling());
     let multiband = || {
-        Multiband::new(s.seed(), &WEB_TILE3, s.bands(), s.distribution()).with_tiling(s.tiling())
+        Multiband::new(s.seed(), web_tile3(), s.bands(), s.distribution()).with_tiling(s.tiling())
     };
     if p.infinite {
         let (noise, footprint) = (multiband(), R::from_f32(INFINITE_AT_ZOOM / p.zoom));
@@ -213,12 +236,13 @@ impl Demo {
             )));
         }
         let n = (size * size) as usize;
+        let spectrum = SPECTRUM_SIDE.min(size as usize).pow(2);
         Ok(Demo {
             size: size as usize,
             values: vec![0.0; n],
             rgba: vec![255; n * 4],
-            spectrum: vec![0; n],
-            spectrum_rgba: vec![255; n * 4],
+            spectrum: vec![0; spectrum],
+            spectrum_rgba: vec![255; spectrum * 4],
             histogram: vec![0; HISTOGRAM_BINS],
             mean: 0.0,
             std_dev: 0.0,
@@ -233,6 +257,30 @@ impl Demo {
             fill_any::<f32>(params, self.size, &mut self.values);
         }
         self.finish(params);
+    }
+
+    /// The plane view's grid for `params`, for a batch sampler: `[x, y, time, step]`, the
+    /// first pixel's coordinates and the step between pixels along x and y (the values
+    /// [`render`](Self::render) samples at, in `f32`).
+    pub fn grid(&self, params: &Params) -> Vec<f32> {
+        let (origin, step) = plane(params, self.size);
+        vec![origin[0], origin[1], params.time, step]
+    }
+
+    /// Takes a frame sampled elsewhere (the page's batch path: the npm package's `fillGrid` of
+    /// [`grid`](Self::grid) with [`Params::batch_text`](crate::Params::batch_text)), row by
+    /// row, and finishes it as [`render`](Self::render) does: statistics, colours, histogram.
+    ///
+    /// # Errors
+    ///
+    /// A message if `values` does not hold one value per pixel.
+    pub fn render_values(&mut self, params: &Params, values: &[f32]) -> Result<(), JsValue> {
+        if values.len() != self.values.len() {
+            return Err(JsValue::from_str("one value per pixel expected"));
+        }
+        self.values.copy_from_slice(values);
+        self.finish(params);
+        Ok(())
     }
 
     /// Renders the noise of `params` on a sphere that fills the frame (sliced as a solid
@@ -291,17 +339,26 @@ impl Demo {
         put_rgba(ctx, &self.rgba, self.size)
     }
 
-    /// Computes the frame's power spectrum (log magnitude, DC centred) and draws it on `ctx`.
+    /// Computes the power spectrum (log magnitude, DC centred) of the frame's central
+    /// [`SPECTRUM_SIDE`]² pixels (all of a smaller frame) and draws it on `ctx`.
     ///
     /// # Errors
     ///
     /// The canvas's own error if it refuses the image.
     pub fn draw_spectrum(&mut self, ctx: &CanvasRenderingContext2d) -> Result<(), JsValue> {
-        log_spectrum(&self.values, self.size, &mut self.spectrum);
+        let side = SPECTRUM_SIDE.min(self.size);
+        let at = (self.size - side) / 2;
+        let centre: Vec<f32> = self.values[at * self.size..]
+            .chunks(self.size)
+            .take(side)
+            .flat_map(|row| &row[at..at + side])
+            .copied()
+            .collect();
+        log_spectrum(&centre, side, &mut self.spectrum);
         for (s, px) in self.spectrum.iter().zip(self.spectrum_rgba.chunks_mut(4)) {
             px[..3].copy_from_slice(&[*s, *s, *s]);
         }
-        put_rgba(ctx, &self.spectrum_rgba, self.size)
+        put_rgba(ctx, &self.spectrum_rgba, side)
     }
 
     /// The histogram of the frame's values, standardised, in [`HISTOGRAM_BINS`] bins over
@@ -325,7 +382,8 @@ impl Demo {
         self.values.len() as u32
     }
 
-    /// The spectrum as computed by the last [`draw_spectrum`](Self::draw_spectrum).
+    /// The spectrum as computed by the last [`draw_spectrum`](Self::draw_spectrum)
+    /// ([`SPECTRUM_SIDE`]² values, or the frame's size if smaller).
     pub fn spectrum(&self) -> Vec<u8> {
         self.spectrum.clone()
     }
