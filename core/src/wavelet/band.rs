@@ -527,7 +527,7 @@ impl<'t, T> Wavelet<'t, T> {
         // A coefficient beyond its block's reach is skipped where multiplying costs more than
         // a branch (no float unit: ARMv6-M, which has no 64-bit product either, and RV32
         // without F; and wasm32, whose engines keep the branches cheap), and elsewhere weighs
-        // 0: adding the `±0` it gives leaves a sum's bits as they are (`row.rs`, `exclude`).
+        // 0: adding the `±0` it gives leaves a sum's bits as they are ([`exclude`]).
         // The same bits either way; which is faster where was measured (bench/README.md,
         // "wavelet sums in columns").
         let skip = cfg!(any(
@@ -536,17 +536,7 @@ impl<'t, T> Wavelet<'t, T> {
             target_arch = "wasm32"
         ));
         if !skip && crossing != 0 {
-            for sides in &mut sided {
-                for (side, bits) in sides.iter_mut().zip(members) {
-                    for (axis, bits) in side.iter_mut().zip(bits) {
-                        for (j, w) in axis.iter_mut().enumerate() {
-                            if bits >> j & 1 == 0 {
-                                *w = [R::ZERO];
-                            }
-                        }
-                    }
-                }
-            }
+            sided.iter_mut().for_each(|sides| exclude(sides, members));
         }
         // Every subset of the crossing axes, largest first.
         for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
@@ -710,6 +700,27 @@ fn blend_axis<R: Real, const L: usize>(
         let b: R = blend_weight(l_plus_n + j, n, h);
         for x in wj.iter_mut() {
             *x = x.mul_fraction(b);
+        }
+    }
+}
+
+/// Sets to 0 the weight of each coefficient outside its block's reach: `sides[s][a][j]` is
+/// the weight in block side `s` (the first block or the next) along axis `a` of coefficient
+/// `j`, `members[s][a]` its bits as [`members`] gives them.
+///
+/// `add_block` with a `mine` that skips such a coefficient gives the same bits: a zero
+/// weight adds `±0`, and every sum starts at `+0`, adding anything to `+0` never gives `−0`
+/// (`+0 + −0 = +0`), so a sum is never `−0` and adding `±0` to it changes nothing (fixed
+/// point: adding 0 is exact). The coefficients it multiplies are the tile's, finite.
+#[inline]
+fn exclude<R: Real, const D: usize>(sides: &mut [[[[R; 1]; 3]; D]; 2], members: [[u8; D]; 2]) {
+    for (side, bits) in sides.iter_mut().zip(members) {
+        for (axis, bits) in side.iter_mut().zip(bits) {
+            for (j, w) in axis.iter_mut().enumerate() {
+                if bits >> j & 1 == 0 {
+                    *w = [R::ZERO];
+                }
+            }
         }
     }
 }

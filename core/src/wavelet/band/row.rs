@@ -16,7 +16,9 @@
 //! x values is correct (a grid with a negative or zero step, or one that jumps between
 //! blocks), only slower when x moves by more than the cache holds.
 
-use super::{AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, members};
+use super::{
+    AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, exclude, members,
+};
 use crate::Real;
 
 /// Columns held: consecutive samples of a row read three consecutive x indices, in at most two
@@ -84,24 +86,6 @@ struct Row<R, const D: usize> {
     /// Each axis's weights in the first block (`[0]`) and the next (`[1]`), blended where the
     /// axis crosses, 0 for a coefficient outside the block's reach (x unused).
     sides: [[[[R; 1]; 3]; D]; 2],
-}
-
-/// Sets to 0 the weight of each coefficient outside its block's reach (`bits`, as
-/// [`members`] gives them per block).
-///
-/// `evaluate` skips such a coefficient; a zero weight adds `±0` instead, which leaves the sum's
-/// bits as they are: every sum starts at `+0`, and adding anything to `+0` never gives `−0`
-/// (`+0 + −0 = +0`), so a sum is never `−0` and adding `±0` to it changes nothing (fixed point:
-/// adding 0 is exact). The coefficients it multiplies are the tile's, finite.
-#[inline]
-fn exclude<R: Real>(axis: &mut [[[R; 1]; 3]; 2], bits: [u8; 2]) {
-    for (side, bits) in axis.iter_mut().zip(bits) {
-        for (j, w) in side.iter_mut().enumerate() {
-            if bits >> j & 1 == 0 {
-                *w = [R::ZERO];
-            }
-        }
-    }
 }
 
 impl<T> Wavelet<'_, T> {
@@ -339,17 +323,17 @@ impl<T> Wavelet<'_, T> {
             let (b, l0, two) = axis_span(first, n, h);
             (*block, *local0) = (b, l0);
             row.crossing |= (two as usize) << a;
-            // `sided`'s weights, 0 outside each block (`exclude`).
-            let mut axis = [weights.map(|w| [w]); 2];
+            // `sided`'s weights, 0 outside each block (`exclude`): this axis's, in each side.
+            let mut axis = [[weights.map(|w| [w])]; 2];
             if two {
                 if h > 0 {
-                    for (s, side) in axis.iter_mut().enumerate() {
+                    for (s, [side]) in axis.iter_mut().enumerate() {
                         blend_axis(side, l0 + n - s * n, n, h);
                     }
                 }
-                exclude(&mut axis, members(1, [l0], n, h).map(|[bits]| bits));
+                exclude(&mut axis, members(1, [l0], n, h));
             }
-            for (side, weights) in row.sides.iter_mut().zip(axis) {
+            for (side, [weights]) in row.sides.iter_mut().zip(axis) {
                 if let Some(w) = side.get_mut(a) {
                     *w = weights;
                 }
