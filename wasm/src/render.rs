@@ -267,20 +267,20 @@ impl Demo {
         vec![origin[0], origin[1], params.time, step]
     }
 
-    /// Takes a frame sampled elsewhere (the page's batch path: the npm package's `fillGrid` of
-    /// [`grid`](Self::grid) with [`Params::batch_text`](crate::Params::batch_text)), row by
-    /// row, and finishes it as [`render`](Self::render) does: statistics, colours, histogram.
-    ///
-    /// # Errors
-    ///
-    /// A message if `values` does not hold one value per pixel.
-    pub fn render_values(&mut self, params: &Params, values: &[f32]) -> Result<(), JsValue> {
-        if values.len() != self.values.len() {
-            return Err(JsValue::from_str("one value per pixel expected"));
-        }
-        self.values.copy_from_slice(values);
+    /// Where the frame's values are in this module's memory: `size²` `f32`s from this byte
+    /// address, row by row. The page's batch path fills them there (the npm package's
+    /// `fillGrid` of [`grid`](Self::grid) with [`Params::batch_text`](crate::Params::batch_text)
+    /// into a `Float32Array` over the module's memory, made anew for each frame since the
+    /// memory may grow), then calls [`render_values`](Self::render_values): no copy.
+    pub fn values_address(&self) -> usize {
+        self.values.as_ptr() as usize
+    }
+
+    /// Finishes a frame whose values were written at
+    /// [`values_address`](Self::values_address) as [`render`](Self::render) finishes its own:
+    /// statistics, colours, histogram.
+    pub fn render_values(&mut self, params: &Params) {
         self.finish(params);
-        Ok(())
     }
 
     /// Renders the noise of `params` on a sphere that fills the frame (sliced as a solid
@@ -298,15 +298,16 @@ impl Demo {
 
     /// Statistics, colours and histogram of the frame's finite values (others: background).
     fn finish(&mut self, params: &Params) {
-        let finite = || {
-            self.values
-                .iter()
-                .filter(|v| v.is_finite())
-                .map(|&v| v as f64)
-        };
-        let n = finite().count().max(1) as f64;
-        let mean = finite().sum::<f64>() / n;
-        let var = finite().map(|v| (v - mean).powi(2)).sum::<f64>() / n;
+        // One pass: count, sum and sum of squares in f64 (the values are noise, within a few
+        // units, so E[v²] − mean² loses nothing that shows).
+        let (mut n, mut sum, mut squares) = (0u32, 0.0f64, 0.0f64);
+        for &v in self.values.iter().filter(|v| v.is_finite()) {
+            let v = v as f64;
+            (n, sum, squares) = (n + 1, sum + v, squares + v * v);
+        }
+        let n = n.max(1) as f64;
+        let mean = sum / n;
+        let var = (squares / n - mean * mean).max(0.0);
         (self.mean, self.std_dev) = (mean as f32, var.sqrt() as f32);
         // Colours: mean ± 3σ spans the palette (a constant frame is mid-grey).
         let scale = if self.std_dev > 0.0 {
