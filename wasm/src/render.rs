@@ -1,12 +1,12 @@
 //! One frame: sample the chosen noise over the view, colour it, and keep what the page shows.
 
+use std::sync::OnceLock;
+
 use bandnoise::fractal::Fractal;
 use bandnoise::spec::{Base, Tiles};
 use bandnoise::wavelet::{
     DEFAULT_TILE_SEED, Multiband, QuantizedTile2, QuantizedTile3, TILE2_I16, Tile3, Wavelet,
 };
-use std::sync::OnceLock;
-
 use bandnoise::{FilteredNoise, I16F16, Noise, ProjectedNoise, Real};
 use wasm_bindgen::Clamped;
 use wasm_bindgen::prelude::*;
@@ -19,8 +19,9 @@ use crate::params::{Filter, Params};
 /// The demo's 3D wavelet tile: the crate's `TILE3_I16` (32³ `i16` coefficients, the tile of
 /// the npm package that samples the plane views), generated when a wavelet noise first needs
 /// it rather than stored in the module: its 64 KiB would not fit the module's budget, its
-/// generator's code takes 4 KB. `Tile3::generate` is a `const fn` of `f32` arithmetic, so the
-/// tile equals the stored one bit for bit (the end-to-end test compares the two paths' frames).
+/// generator's code takes 4 KB. `Tile3::generate` is a `const fn` of plain `f64` and `f32`
+/// arithmetic, which gives the same bits at compile time and at run time, so the tile equals
+/// the stored one bit for bit (the end-to-end test compares the two paths' frames).
 static WEB_TILE3: OnceLock<QuantizedTile3<32>> = OnceLock::new();
 
 fn web_tile3() -> &'static QuantizedTile3<32> {
