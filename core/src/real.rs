@@ -371,6 +371,27 @@ pub trait Real:
     #[must_use]
     fn from_ratio(num: i32, shift: u32) -> Self;
 
+    /// [`from_ratio`](Self::from_ratio)`(num, shift)`, given `unit`, which must be
+    /// `from_ratio(1, shift)`: the same value, for a loop over many numerators with one shift
+    /// (a quantized wavelet tile's reads), where `unit` is computed once. Floats multiply by
+    /// `unit` (the product `from_ratio` computes); fixed point shifts as `from_ratio` does
+    /// (its `unit` rounds to 0 for a shift beyond 16).
+    ///
+    /// ```
+    /// use bandnoise::{I16F16, Real};
+    ///
+    /// let unit = f32::from_ratio(1, 13);
+    /// assert_eq!(f32::from_ratio_unit(-300, 13, unit), f32::from_ratio(-300, 13));
+    /// let unit = I16F16::from_ratio(1, 20);
+    /// assert_eq!(I16F16::from_ratio_unit(300, 20, unit), I16F16::from_ratio(300, 20));
+    /// ```
+    #[must_use]
+    #[inline]
+    fn from_ratio_unit(num: i32, shift: u32, unit: Self) -> Self {
+        let _ = unit;
+        Self::from_ratio(num, shift)
+    }
+
     /// Splits a coordinate into its lattice cell `floor(x)` and the fraction `x − floor(x)` in
     /// `[0, 1)`.
     ///
@@ -573,6 +594,15 @@ macro_rules! impl_real_float {
                         ((bias - shift as u64) << (<$t>::MANTISSA_DIGITS - 1)) as _,
                     );
                     num as $t * scale
+                } else {
+                    ratio_far(num, shift) as $t
+                }
+            }
+            #[inline]
+            fn from_ratio_unit(num: i32, shift: u32, unit: Self) -> Self {
+                // `from_ratio`'s product, with its factor (`unit`) computed by the caller.
+                if shift < 64 {
+                    num as $t * unit
                 } else {
                     ratio_far(num, shift) as $t
                 }

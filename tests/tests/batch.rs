@@ -227,7 +227,10 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
 /// rows in blend zones along y and z, x running over a border, backwards, standing still, and
 /// in strides longer than a row's column cache (`band/row.rs`), against `sample`.
 fn check_rows<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, n: f32) {
-    for (y0, z0) in [(n - 5.3, n - 5.1), (-n - 4.9, 2.6), (3.4, -n + 3.3)] {
+    // Stacks of slices, and one slice with a finer step along y (3D: the demo's grid).
+    let shapes = [(0.25f32, 22usize), (0.07, 1)];
+    let starts = [(n - 5.3, n - 5.1), (-n - 4.9, 2.6), (3.4, -n + 3.3)];
+    for ((y0, z0), (y_step, depth)) in starts.into_iter().flat_map(|s| shapes.map(|h| (s, h))) {
         for (x0, step) in [
             (n - 9.7, 0.37f32),
             (n + 9.1, -0.29),
@@ -237,8 +240,8 @@ fn check_rows<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, n:
             (n - 0.6, 0.013),
         ] {
             let origin: [R; D] = core::array::from_fn(|a| R::from_f32([x0, y0, z0][a]));
-            let steps: [R; D] = core::array::from_fn(|a| R::from_f32([step, 0.25, 0.5][a]));
-            let size: [usize; D] = core::array::from_fn(|a| [77, 44, 22][a]);
+            let steps: [R; D] = core::array::from_fn(|a| R::from_f32([step, y_step, 0.5][a]));
+            let size: [usize; D] = core::array::from_fn(|a| [77, 44, depth][a]);
             let grid = Grid::new(origin, steps, size);
             let mut out = vec![R::ZERO; grid.len()];
             noise.fill_grid(&grid, &mut out).unwrap();

@@ -49,6 +49,19 @@ pub trait TileData<const D: usize> {
     fn get<R: Real>(&self, index: [usize; D]) -> R;
     /// The coefficient at flat index `x + SIZE·y (+ SIZE²·z)`, below `SIZE^D`.
     fn flat<R: Real>(&self, index: usize) -> R;
+    /// What [`flat_with`](Self::flat_with) needs that is the same for every read, computed
+    /// once for a loop of reads (a quantized tile's scale). The default: nothing (`R::ONE`).
+    #[inline]
+    fn unit<R: Real>(&self) -> R {
+        R::ONE
+    }
+    /// [`flat`](Self::flat)`(index)`, the same value, given `unit == self.unit()`. The
+    /// default reads `flat`.
+    #[inline]
+    fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
+        let _ = unit;
+        self.flat(index)
+    }
     /// The largest `|coefficient|`.
     fn max_abs(&self) -> f32;
 }
@@ -852,6 +865,7 @@ impl<T> Wavelet<'_, T> {
         T: TileData<D>,
     {
         let planes = if D == 3 { 3 } else { 1 };
+        let unit = self.tile.unit::<R>();
         for (l, s) in sum.iter_mut().enumerate() {
             for jx in 0..3 {
                 if !mine(0, jx) {
@@ -867,13 +881,13 @@ impl<T> Wavelet<'_, T> {
                         let mut line = R::ZERO;
                         for jz in 0..planes {
                             if mine(D - 1, jz) {
-                                let c = self.tile.flat(base + offset[D - 1][jz][l]);
+                                let c = self.tile.flat_with(base + offset[D - 1][jz][l], unit);
                                 line = line.saturating_add(weights[D - 1][jz][l].mul_fraction(c));
                             }
                         }
                         line
                     } else {
-                        self.tile.flat(base)
+                        self.tile.flat_with(base, unit)
                     };
                     // Weights lie in [0, 1], so no product exceeds its other factor.
                     column = column.saturating_add(weights[1][jy][l].mul_fraction(line));

@@ -89,6 +89,18 @@ impl<const N: usize> QuantizedTile2<N> {
     pub const fn shift(&self) -> u32 {
         self.shift
     }
+
+    /// `q` at flat index `x + N·y`: in range by construction; `get` keeps sampling provably
+    /// panic-free.
+    #[inline]
+    fn read(&self, index: usize) -> i32 {
+        self.data
+            .as_flattened()
+            .get(index)
+            .copied()
+            .unwrap_or(0)
+            .into()
+    }
 }
 
 impl<const N: usize> QuantizedTile3<N> {
@@ -122,6 +134,14 @@ impl<const N: usize> QuantizedTile3<N> {
     pub const fn shift(&self) -> u32 {
         self.shift
     }
+
+    /// `q` at flat index `x + N·(y + N·z)`: in range by construction; `get` keeps sampling
+    /// provably panic-free.
+    #[inline]
+    fn read(&self, index: usize) -> i32 {
+        let data = self.data.as_flattened().as_flattened();
+        data.get(index).copied().unwrap_or(0).into()
+    }
 }
 
 impl<const N: usize> TileData<2> for QuantizedTile2<N> {
@@ -132,9 +152,15 @@ impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        // In range by construction; `get` keeps sampling provably panic-free.
-        let q = self.data.as_flattened().get(index).copied().unwrap_or(0);
-        R::from_ratio(q as i32, self.shift)
+        R::from_ratio(self.read(index), self.shift)
+    }
+    #[inline]
+    fn unit<R: Real>(&self) -> R {
+        R::from_ratio(1, self.shift)
+    }
+    #[inline]
+    fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
+        R::from_ratio_unit(self.read(index), self.shift, unit)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -149,17 +175,46 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        // In range by construction; `get` keeps sampling provably panic-free.
-        let q = self
-            .data
-            .as_flattened()
-            .as_flattened()
-            .get(index)
-            .copied()
-            .unwrap_or(0);
-        R::from_ratio(q as i32, self.shift)
+        R::from_ratio(self.read(index), self.shift)
+    }
+    #[inline]
+    fn unit<R: Real>(&self) -> R {
+        R::from_ratio(1, self.shift)
+    }
+    #[inline]
+    fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
+        R::from_ratio_unit(self.read(index), self.shift, unit)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::band::TileData;
+    use super::super::{TILE2_I16, TILE3_I16};
+    use crate::{I16F16, Real};
+
+    /// `flat_with` with the tile's `unit` reads every coefficient as `flat` does, bit for bit,
+    /// in each number type (the sampling paths read through it).
+    #[test]
+    fn reads_with_the_unit_are_reads() {
+        fn check<R: Real, T: TileData<D>, const D: usize>(tile: &T, bits: impl Fn(R) -> u64) {
+            let unit = tile.unit::<R>();
+            for i in 0..T::SIZE.pow(D as u32) {
+                assert_eq!(
+                    bits(tile.flat_with(i, unit)),
+                    bits(tile.flat(i)),
+                    "index {i}"
+                );
+            }
+        }
+        check::<f32, _, 2>(&TILE2_I16, |v| v.to_bits().into());
+        check::<f64, _, 2>(&TILE2_I16, f64::to_bits);
+        check::<I16F16, _, 2>(&TILE2_I16, |v| v.to_bits() as u64);
+        check::<f32, _, 3>(&TILE3_I16, |v| v.to_bits().into());
+        check::<f64, _, 3>(&TILE3_I16, f64::to_bits);
+        check::<I16F16, _, 3>(&TILE3_I16, |v| v.to_bits() as u64);
     }
 }

@@ -282,6 +282,8 @@ impl<T> Wavelet<'_, T> {
         }
         columns.keys[slot] = key;
         let yz = row.crossing >> 1;
+        // The tile's scale, once for the column's reads.
+        let unit = self.tile.unit::<R>();
         for t in (0..4usize).filter(|t| t & !yz == 0) {
             let x = block.x[t & 3].offset(l_plus_n, n);
             // `add_block`'s column: lines along z, then along y, each coefficient outside
@@ -293,11 +295,12 @@ impl<T> Wavelet<'_, T> {
                 let line = if D == 3 {
                     let mut line = R::ZERO;
                     for (&b, wz) in base.iter().zip(wz) {
-                        line = line.saturating_add(wz[0].mul_fraction(self.tile.flat(x + b)));
+                        line = line
+                            .saturating_add(wz[0].mul_fraction(self.tile.flat_with(x + b, unit)));
                     }
                     line
                 } else {
-                    self.tile.flat(x + base[0])
+                    self.tile.flat_with(x + base[0], unit)
                 };
                 column = column.saturating_add(wy[0].mul_fraction(line));
             }
