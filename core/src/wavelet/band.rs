@@ -222,6 +222,30 @@ pub(crate) fn bspline3<R: Real>(x: R) -> (i32, [R; 3]) {
     (first, bspline3_weights(f))
 }
 
+/// [`bspline3`] of each lane: the first coefficients into `first`, the weights into
+/// `weights[j]`, bit for bit (through [`Real::split_lanes`], written so the compiler can
+/// vectorise it).
+#[inline]
+pub(crate) fn bspline3_lanes<R: Real>(
+    x: &[R; LANES],
+    first: &mut [i32; LANES],
+    weights: &mut [[R; LANES]; 3],
+) {
+    let mut frac = [R::ZERO; LANES];
+    R::split_lanes(x, first, &mut frac);
+    let half = R::from_ratio(1, 1);
+    for (first, frac) in first.iter_mut().zip(&mut frac) {
+        // `bspline3_fraction`'s choice, as selects.
+        let up = *frac >= half;
+        *first = if up { *first } else { first.wrapping_sub(1) };
+        *frac = if up { *frac - half } else { *frac + half };
+    }
+    for l in 0..LANES {
+        let [w0, w1, w2] = bspline3_weights(frac[l]);
+        (weights[0][l], weights[1][l], weights[2][l]) = (w0, w1, w2);
+    }
+}
+
 /// The first coefficient and the fraction `f` of `x − ½` behind [`bspline3`].
 #[inline]
 fn bspline3_fraction<R: Real>(x: R) -> (i32, R) {

@@ -17,9 +17,11 @@
 //! blocks), only slower when x moves by more than the cache holds.
 
 use super::{
-    AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, exclude, members,
+    AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, bspline3_lanes,
+    exclude, members,
 };
 use crate::Real;
+use crate::batch::LANES;
 
 /// Columns held: consecutive samples of a row read three consecutive x indices, in at most two
 /// blocks; 8 x indices × 2 blocks is more than a row ever needs at once.
@@ -128,66 +130,104 @@ impl<T> Wavelet<'_, T> {
             count: 0,
             blocks: [(0, [0; 3]); 8],
         };
-        for (i, o) in out.iter_mut().enumerate() {
-            let (first, weights) = bspline3(x(i));
-            if span.first != Some(first) {
-                let (bx, l0, two) = axis_span(first, n, h);
-                if two {
-                    let at = (bx, l0, two);
-                    self.span_setup(&mut span, &row, first, at, &mut blocks, &mut columns, n);
-                } else {
-                    // Most spans: one block along x, three columns (each holding every
-                    // subset of the crossing y/z axes).
-                    let mut at = [0u8; 3];
-                    for (jx, at) in at.iter_mut().enumerate() {
-                        let (slot, key) = slot(first.wrapping_add(jx as i32), bx);
-                        if columns.keys[slot] != key {
-                            self.fetch_column(
-                                &mut columns,
-                                slot,
-                                key,
-                                &mut blocks,
-                                &row,
-                                bx,
-                                l0 + jx + n,
-                                n,
-                            );
-                        }
-                        *at = (4 * slot) as u8;
-                    }
-                    (span.first, span.two) = (Some(first), false);
-                    // Every subset of the crossing y/z axes, largest first (`block_sums`).
-                    let yz = row.crossing >> 1 & 3;
-                    let (mut s, mut count) = (yz, 0);
-                    loop {
-                        span.blocks[count % 8] = (0, at.map(|k| k + s as u8));
-                        count += 1;
-                        if s == 0 {
-                            break;
-                        }
-                        s = (s - 1) & yz;
-                    }
-                    span.count = count;
-                }
+        // Sixteen samples at a time: their first coefficients and weights as lanes (the
+        // compiler vectorises them), then each run of samples with the same first coefficient
+        // (a span) summed lane by lane, entry by entry, which it vectorises too. Each sample's
+        // operations are `evaluate`'s, in its order: only the loops are interchanged.
+        let mut x_lanes = [R::ZERO; LANES];
+        let (mut firsts, mut weights) = ([0i32; LANES], [[R::ZERO; LANES]; 3]);
+        for (c, chunk) in out.chunks_mut(LANES).enumerate() {
+            let last = chunk.len().saturating_sub(1);
+            for (l, v) in x_lanes.iter_mut().enumerate() {
+                // Lanes past the row's end repeat its last sample (never written).
+                *v = x(c * LANES + l.min(last));
             }
-            // The x weights in each block: `evaluate`'s (`sided`), with the coefficients
-            // outside a block weighing 0 (`exclude`). Factors are in [0, 1]: `mul_fraction`
-            // is exact for 0 and 1.
-            let xs: [[R; 3]; 2] = if span.two {
-                span.factors
-                    .map(|f| core::array::from_fn(|j| weights[j].mul_fraction(f[j])))
-            } else {
-                [weights; 2]
-            };
-            let mut sum = R::ZERO;
-            for &(mx, at) in span.blocks.iter().take(span.count) {
-                for (&k, &wx) in at.iter().zip(&xs[mx as usize & 1]) {
-                    let column = columns.values[k as usize % (4 * SLOTS)];
-                    sum = sum.saturating_add(wx.mul_fraction(column));
+            bspline3_lanes(&x_lanes, &mut firsts, &mut weights);
+            let mut a = 0;
+            while a < chunk.len() {
+                let first = firsts[a % LANES];
+                let mut b = a + 1;
+                while b < chunk.len() && firsts[b % LANES] == first {
+                    b += 1;
                 }
+                if span.first != Some(first) {
+                    let caches = (&mut blocks, &mut columns);
+                    self.set_span(&mut span, &row, first, caches, n, h);
+                }
+                let mut sums = [R::ZERO; LANES];
+                let lanes = a..b.min(LANES);
+                for &(mx, at) in span.blocks.iter().take(span.count) {
+                    for (j, &k) in at.iter().enumerate() {
+                        let column = columns.values[k as usize % (4 * SLOTS)];
+                        let (sums, w) = (&mut sums[lanes.clone()], &weights[j][lanes.clone()]);
+                        // The x weights in each block: `evaluate`'s (`sided`), with the
+                        // coefficients outside a block weighing 0 (`exclude`). Factors are
+                        // in [0, 1]: `mul_fraction` is exact for 0 and 1.
+                        if span.two {
+                            let f = span.factors[mx as usize & 1][j];
+                            for (sum, &w) in sums.iter_mut().zip(w) {
+                                let wx = w.mul_fraction(f);
+                                *sum = sum.saturating_add(wx.mul_fraction(column));
+                            }
+                        } else {
+                            for (sum, &w) in sums.iter_mut().zip(w) {
+                                *sum = sum.saturating_add(w.mul_fraction(column));
+                            }
+                        }
+                    }
+                }
+                let outs = chunk.get_mut(a..b).unwrap_or_default();
+                for (o, &sum) in outs.iter_mut().zip(&sums[lanes]) {
+                    put(o, sum.canonical());
+                }
+                a = b;
             }
-            put(o, sum.canonical());
         }
+    }
+
+    /// Sets `span` for the samples whose first x coefficient is `first`, fetching the
+    /// columns it reads that the cache does not hold.
+    #[inline]
+    fn set_span<R: Real, const D: usize>(
+        &self,
+        span: &mut Span<R>,
+        row: &Row<R, D>,
+        first: i32,
+        (blocks, columns): (&mut [Block; BLOCKS], &mut Columns<R>),
+        n: usize,
+        h: usize,
+    ) where
+        T: TileData<D>,
+    {
+        let (bx, l0, two) = axis_span(first, n, h);
+        if two {
+            self.span_setup(span, row, first, (bx, l0, two), blocks, columns, n);
+            return;
+        }
+        // Most spans: one block along x, three columns (each holding every subset of the
+        // crossing y/z axes).
+        let mut at = [0u8; 3];
+        for (jx, at) in at.iter_mut().enumerate() {
+            let (slot, key) = slot(first.wrapping_add(jx as i32), bx);
+            if columns.keys[slot] != key {
+                let l_plus_n = l0 + jx + n;
+                self.fetch_column(columns, slot, key, blocks, row, bx, l_plus_n, n);
+            }
+            *at = (4 * slot) as u8;
+        }
+        (span.first, span.two) = (Some(first), false);
+        // Every subset of the crossing y/z axes, largest first (`block_sums`).
+        let yz = row.crossing >> 1 & 3;
+        let (mut s, mut count) = (yz, 0);
+        loop {
+            span.blocks[count % 8] = (0, at.map(|k| k + s as u8));
+            count += 1;
+            if s == 0 {
+                break;
+            }
+            s = (s - 1) & yz;
+        }
+        span.count = count;
     }
 
     /// Sets `span` for the samples whose first x coefficient is `first`: whether they reach
