@@ -90,6 +90,25 @@ struct Row<R, const D: usize> {
     sides: [[[[R; 1]; 3]; D]; 2],
 }
 
+/// Adds `column` weighted by each lane's x weight (times `factor`, the block's blend weight,
+/// where the span reaches two blocks) to the lane's sum, as `add_block` does. Factors are in
+/// [0, 1]: `mul_fraction` is exact for 0 and 1.
+#[inline(always)]
+fn accumulate<R: Real>(sums: &mut [R], weights: &[R], column: R, factor: Option<R>) {
+    match factor {
+        Some(f) => {
+            for (sum, &w) in sums.iter_mut().zip(weights) {
+                *sum = sum.saturating_add(w.mul_fraction(f).mul_fraction(column));
+            }
+        }
+        None => {
+            for (sum, &w) in sums.iter_mut().zip(weights) {
+                *sum = sum.saturating_add(w.mul_fraction(column));
+            }
+        }
+    }
+}
+
 impl<T> Wavelet<'_, T> {
     /// Writes, through `put`, the band at `(x(i), rest[1], …)` into `out[i]` for every `i`: bit
     /// for bit `evaluate` at each point (`rest[0]` is ignored).
@@ -156,23 +175,19 @@ impl<T> Wavelet<'_, T> {
                 }
                 let mut sums = [R::ZERO; LANES];
                 let lanes = a..b.min(LANES);
+                // A long run: every lane (whole vectors, the extra lanes unused).
+                let whole = lanes.len() >= LANES / 2;
                 for &(mx, at) in span.blocks.iter().take(span.count) {
                     for (j, &k) in at.iter().enumerate() {
                         let column = columns.values[k as usize % (4 * SLOTS)];
-                        let (sums, w) = (&mut sums[lanes.clone()], &weights[j][lanes.clone()]);
                         // The x weights in each block: `evaluate`'s (`sided`), with the
-                        // coefficients outside a block weighing 0 (`exclude`). Factors are
-                        // in [0, 1]: `mul_fraction` is exact for 0 and 1.
-                        if span.two {
-                            let f = span.factors[mx as usize & 1][j];
-                            for (sum, &w) in sums.iter_mut().zip(w) {
-                                let wx = w.mul_fraction(f);
-                                *sum = sum.saturating_add(wx.mul_fraction(column));
-                            }
+                        // coefficients outside a block weighing 0 (`exclude`).
+                        let factor = span.two.then(|| span.factors[mx as usize & 1][j]);
+                        if whole {
+                            accumulate(&mut sums, &weights[j], column, factor);
                         } else {
-                            for (sum, &w) in sums.iter_mut().zip(w) {
-                                *sum = sum.saturating_add(w.mul_fraction(column));
-                            }
+                            let w = &weights[j][lanes.clone()];
+                            accumulate(&mut sums[lanes.clone()], w, column, factor);
                         }
                     }
                 }
