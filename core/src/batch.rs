@@ -197,6 +197,30 @@ pub(crate) fn for_each_row<R: Real, const D: usize>(
     Ok(())
 }
 
+/// [`for_each_row`] `G` rows at a time: calls `rows(starts, values)` with the first points of
+/// up to `G` consecutive rows and their part of `out`.
+#[inline]
+pub(crate) fn for_each_rows<R: Real, const D: usize, const G: usize>(
+    grid: &Grid<R, D>,
+    out: &mut [R],
+    mut rows: impl FnMut(&[[R; D]], &mut [R]),
+) -> Result<(), Error> {
+    check_len(grid.len(), out.len())?;
+    let row_len = grid.size[0];
+    if row_len == 0 || grid.is_empty() {
+        return Ok(());
+    }
+    let mut starts = [[R::ZERO; D]; G];
+    for (k, values) in out.chunks_mut(row_len.saturating_mul(G)).enumerate() {
+        let count = values.len() / row_len;
+        for (g, start) in starts.iter_mut().enumerate().take(count) {
+            *start = grid.row_start(k * G + g);
+        }
+        rows(starts.get(..count).unwrap_or_default(), values);
+    }
+    Ok(())
+}
+
 /// Evaluates `noise` over `grid` into `out` (see [`Noise::fill_grid`]).
 pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     noise: &N,

@@ -27,11 +27,12 @@
 //!
 //! The figures measured for each tiling are in [`Tiling`]'s docs.
 
-use crate::batch::{Grid, LANES, for_each_row, lane};
+use crate::batch::{Grid, LANES, for_each_rows, lane};
 use crate::hash::{CellHash, mix};
 use crate::{Error, Noise, Real};
 
 mod row;
+pub(crate) use row::GROUP;
 
 use super::tile::{Tile2, Tile3};
 
@@ -952,11 +953,11 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
         self.evaluate_lanes(p, out);
     }
 
-    /// Row by row, each column of coefficients the row's samples share summed once
-    /// (`band/row.rs`).
+    /// Row by row, each column of coefficients the row's samples share summed once, rows
+    /// that share their y/z coefficients together (`band/row.rs`).
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
-        for_each_row(grid, out, |start, row_out| {
-            self.fill_row(start, |i| grid.coordinate(0, i), row_out, |o, v| *o = v);
+        for_each_rows::<R, D, GROUP>(grid, out, |starts, values| {
+            self.fill_rows(starts, |i| grid.coordinate(0, i), values, |o, v| *o = v);
         })
     }
 

@@ -21,10 +21,10 @@
 
 use heapless::Vec;
 
-use crate::batch::{Grid, for_each_row};
+use crate::batch::{Grid, for_each_rows};
 use crate::{Error, Noise, ProjectedNoise, Real};
 
-use super::band::{TileData, Tiling, Wavelet};
+use super::band::{GROUP, TileData, Tiling, Wavelet};
 use super::erf::erf_with_derivative;
 use super::projected::GAIN_MAX;
 
@@ -621,8 +621,8 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
     /// then each value finished as `sample` does.
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
         let first = self.bands.first;
-        for_each_row(grid, out, |start, row_out| {
-            row_out.fill(R::ZERO);
+        for_each_rows::<R, D, GROUP>(grid, out, |starts, values| {
+            values.fill(R::ZERO);
             for (i, w) in self.scaled.iter().enumerate() {
                 let (band, w) = (first + i as i32, w[D - 2]);
                 if w == 0.0 {
@@ -630,14 +630,18 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
                 }
                 let (_, to_band) = self.band_map::<R, D>(band);
                 let weight = R::from_f32(w);
-                self.band.fill_row(
-                    core::array::from_fn(|a| to_band(start[a], a)),
+                let mut rests = [[R::ZERO; D]; GROUP];
+                for (rest, start) in rests.iter_mut().zip(starts) {
+                    *rest = core::array::from_fn(|a| to_band(start[a], a));
+                }
+                self.band.fill_rows(
+                    rests.get(..starts.len()).unwrap_or_default(),
                     |i| to_band(grid.coordinate(0, i), 0),
-                    row_out,
+                    values,
                     |sum, v| *sum = sum.saturating_add(weight.mul_rn(v)),
                 );
             }
-            for v in row_out.iter_mut() {
+            for v in values.iter_mut() {
                 *v = self.finish(*v).0;
             }
         })

@@ -41,16 +41,26 @@ struct Block {
     base: [[[usize; 3]; 3]; 4],
 }
 
+/// Rows summed together at most: consecutive rows that share their y/z coefficients (in a
+/// z-slice, the rows until the first y coefficient moves) read each line of coefficients
+/// once for all of them, and compute their x weights once. One in WebAssembly, where V8's
+/// code for groups of 2 or 4 rows was slower than row by row (measured: bench/README.md,
+/// "wavelet rows in groups").
+pub(crate) const GROUP: usize = if cfg!(target_arch = "wasm32") { 1 } else { 4 };
+
 /// The column cache: slot `k` holds the column at one x index of one block along x
-/// (`keys[k]`): `values[4k + s]` for each subset `s` of the crossing y/z axes, the block's
-/// 3 (3D: 9) coefficients there weighted by the row's y and z weights as `add_block` sums
-/// them.
+/// (`keys[k]`): `values[4k + s][r]` for each subset `s` of the crossing y/z axes and row `r`
+/// of the group, the block's 3 (3D: 9) coefficients there weighted by the row's y and z
+/// weights as `add_block` sums them.
 struct Columns<R> {
     /// `key(g, b)` of the column each slot holds; initially keys that map to other slots, so
     /// no lookup matches them.
     keys: [u64; SLOTS],
-    values: [R; 4 * SLOTS],
+    values: [[R; GROUP]; 4 * SLOTS],
 }
+
+/// The y weights of a group's rows, as lanes: `[side][jy][row]` (0 for rows past the group's).
+type GroupWeights<R> = [[[R; GROUP]; 3]; 2];
 
 /// The slot of x index `g` in block `b` (distinct for the three x indices and two blocks of
 /// one span), and its key.
@@ -78,6 +88,7 @@ struct Span<R> {
 }
 
 /// What stays fixed along a row: its y/z blocks, local indices, crossing axes and weights.
+#[derive(Clone, Copy)]
 struct Row<R, const D: usize> {
     /// The first block along each axis (x unused).
     block: [i32; D],
@@ -88,6 +99,29 @@ struct Row<R, const D: usize> {
     /// Each axis's weights in the first block (`[0]`) and the next (`[1]`), blended where the
     /// axis crosses, 0 for a coefficient outside the block's reach (x unused).
     sides: [[[[R; 1]; 3]; D]; 2],
+}
+
+impl<R: Real, const D: usize> Row<R, D> {
+    /// A row at the origin's block, no axis crossing, every weight 0.
+    fn new() -> Self {
+        Row {
+            block: [0; D],
+            local0: [0; D],
+            crossing: 0,
+            sides: [[[[R::ZERO]; 3]; D]; 2],
+        }
+    }
+
+    /// Whether `self` reads the same y/z coefficients as `other`, weighted the same along z:
+    /// the same blocks, local indices and crossing axes, and in 3D the same z weights
+    /// (`==`, so ±0 alike: a line starts at +0, and adding ±0 to a sum changes no bit).
+    fn shares(&self, other: &Self) -> bool {
+        let z = |row: &Self| row.sides.map(|side| side[D - 1]);
+        self.block == other.block
+            && self.local0 == other.local0
+            && self.crossing == other.crossing
+            && (D == 2 || z(self) == z(other))
+    }
 }
 
 /// Adds `column` weighted by each lane's x weight (times `factor`, the block's blend weight,
@@ -110,12 +144,15 @@ fn accumulate<R: Real>(sums: &mut [R], weights: &[R], column: R, factor: Option<
 }
 
 impl<T> Wavelet<'_, T> {
-    /// Writes, through `put`, the band at `(x(i), rest[1], …)` into `out[i]` for every `i`: bit
-    /// for bit `evaluate` at each point (`rest[0]` is ignored).
+    /// Writes, through `put`, the band at `(x(i), rest[1], …)` into `out[r · len + i]` for
+    /// each row `r` (its `rest` being `rests[r]`, `rest[0]` ignored) and every `i` below
+    /// `len = out.len() / rests.len()`: bit for bit `evaluate` at each point. The rows, at
+    /// most [`GROUP`], are consecutive rows of a grid; those that share their y/z
+    /// coefficients are summed together.
     #[inline]
-    pub(crate) fn fill_row<R: Real, const D: usize>(
+    pub(crate) fn fill_rows<R: Real, const D: usize>(
         &self,
-        rest: [R; D],
+        rests: &[[R; D]],
         x: impl Fn(usize) -> R,
         out: &mut [R],
         put: impl Fn(&mut R, R),
@@ -124,7 +161,45 @@ impl<T> Wavelet<'_, T> {
     {
         const { assert!(D == 2 || D == 3, "wavelet tiles are 2D or 3D") };
         let (n, h) = (T::SIZE, self.half_width::<D>());
-        let row = self.row_setup(&rest, n, h);
+        let Some(len) = out.len().checked_div(rests.len()) else {
+            return;
+        };
+        let mut rows = [Row::new(); GROUP];
+        for (row, rest) in rows.iter_mut().zip(rests) {
+            *row = self.row_setup(rest, n, h);
+        }
+        let count = rests.len().min(GROUP);
+        let mut r0 = 0;
+        while r0 < count {
+            let mut r1 = r0 + 1;
+            while r1 < count && rows[r1].shares(&rows[r0]) {
+                r1 += 1;
+            }
+            let group = rows.get(r0..r1).unwrap_or_default();
+            if let Some(out) = out.get_mut(r0 * len..r1 * len) {
+                self.fill_group(group, &x, out, &put);
+            }
+            r0 = r1;
+        }
+    }
+
+    /// [`fill_rows`](Self::fill_rows) for rows that share their y/z blocks, local indices,
+    /// crossing axes and z weights (`Row::shares`): one x sweep, each column's lines read
+    /// once for every row.
+    #[inline]
+    fn fill_group<R: Real, const D: usize>(
+        &self,
+        rows: &[Row<R, D>],
+        x: &impl Fn(usize) -> R,
+        out: &mut [R],
+        put: &impl Fn(&mut R, R),
+    ) where
+        T: TileData<D>,
+    {
+        let (n, h) = (T::SIZE, self.half_width::<D>());
+        let Some(len) = out.len().checked_div(rows.len()) else {
+            return;
+        };
         let unused = AxisMap {
             stride: 0,
             flip: false,
@@ -140,8 +215,16 @@ impl<T> Wavelet<'_, T> {
                 // x index k/2 + 1 and block parity k & 1: the slot after k's pair.
                 slot(((k / 2 + 1) % (SLOTS / 2)) as i32, (k & 1) as i32).1
             }),
-            values: [R::ZERO; 4 * SLOTS],
+            values: [[R::ZERO; GROUP]; 4 * SLOTS],
         };
+        let mut wy = [[[R::ZERO; GROUP]; 3]; 2];
+        for (g, row) in rows.iter().enumerate().take(GROUP) {
+            for (wy, side) in wy.iter_mut().zip(&row.sides) {
+                for (wy, w) in wy.iter_mut().zip(&side[1]) {
+                    wy[g] = w[0];
+                }
+            }
+        }
         let mut span = Span::<R> {
             first: None,
             two: false,
@@ -155,45 +238,48 @@ impl<T> Wavelet<'_, T> {
         // operations are `evaluate`'s, in its order: only the loops are interchanged.
         let mut x_lanes = [R::ZERO; LANES];
         let (mut firsts, mut weights) = ([0i32; LANES], [[R::ZERO; LANES]; 3]);
-        for (c, chunk) in out.chunks_mut(LANES).enumerate() {
-            let last = chunk.len().saturating_sub(1);
+        for c in 0..len.div_ceil(LANES) {
+            let start = c * LANES;
+            let width = (len - start).min(LANES);
             for (l, v) in x_lanes.iter_mut().enumerate() {
                 // Lanes past the row's end repeat its last sample (never written).
-                *v = x(c * LANES + l.min(last));
+                *v = x(start + l.min(width - 1));
             }
             bspline3_lanes(&x_lanes, &mut firsts, &mut weights);
             let mut a = 0;
-            while a < chunk.len() {
+            while a < width {
                 let first = firsts[a % LANES];
                 let mut b = a + 1;
-                while b < chunk.len() && firsts[b % LANES] == first {
+                while b < width && firsts[b % LANES] == first {
                     b += 1;
                 }
                 if span.first != Some(first) {
                     let caches = (&mut blocks, &mut columns);
-                    self.set_span(&mut span, &row, first, caches, n, h);
+                    self.set_span(&mut span, (rows, &wy), first, caches, n, h);
                 }
-                let mut sums = [R::ZERO; LANES];
                 let lanes = a..b.min(LANES);
                 // A long run: every lane (whole vectors, the extra lanes unused).
                 let whole = lanes.len() >= LANES / 2;
-                for &(mx, at) in span.blocks.iter().take(span.count) {
-                    for (j, &k) in at.iter().enumerate() {
-                        let column = columns.values[k as usize % (4 * SLOTS)];
-                        // The x weights in each block: `evaluate`'s (`sided`), with the
-                        // coefficients outside a block weighing 0 (`exclude`).
-                        let factor = span.two.then(|| span.factors[mx as usize & 1][j]);
-                        if whole {
-                            accumulate(&mut sums, &weights[j], column, factor);
-                        } else {
-                            let w = &weights[j][lanes.clone()];
-                            accumulate(&mut sums[lanes.clone()], w, column, factor);
+                for (g, row_out) in out.chunks_exact_mut(len).enumerate().take(GROUP) {
+                    let mut sums = [R::ZERO; LANES];
+                    for &(mx, at) in span.blocks.iter().take(span.count) {
+                        for (j, &k) in at.iter().enumerate() {
+                            let column = columns.values[k as usize % (4 * SLOTS)][g];
+                            // The x weights in each block: `evaluate`'s (`sided`), with the
+                            // coefficients outside a block weighing 0 (`exclude`).
+                            let factor = span.two.then(|| span.factors[mx as usize & 1][j]);
+                            if whole {
+                                accumulate(&mut sums, &weights[j], column, factor);
+                            } else {
+                                let w = &weights[j][lanes.clone()];
+                                accumulate(&mut sums[lanes.clone()], w, column, factor);
+                            }
                         }
                     }
-                }
-                let outs = chunk.get_mut(a..b).unwrap_or_default();
-                for (o, &sum) in outs.iter_mut().zip(&sums[lanes]) {
-                    put(o, sum.canonical());
+                    let outs = row_out.get_mut(start + a..start + b).unwrap_or_default();
+                    for (o, &sum) in outs.iter_mut().zip(&sums[lanes.clone()]) {
+                        put(o, sum.canonical());
+                    }
                 }
                 a = b;
             }
@@ -206,7 +292,7 @@ impl<T> Wavelet<'_, T> {
     fn set_span<R: Real, const D: usize>(
         &self,
         span: &mut Span<R>,
-        row: &Row<R, D>,
+        (rows, wy): (&[Row<R, D>], &GroupWeights<R>),
         first: i32,
         (blocks, columns): (&mut [Block; BLOCKS], &mut Columns<R>),
         n: usize,
@@ -214,9 +300,12 @@ impl<T> Wavelet<'_, T> {
     ) where
         T: TileData<D>,
     {
+        let Some(row) = rows.first() else {
+            return;
+        };
         let (bx, l0, two) = axis_span(first, n, h);
         if two {
-            self.span_setup(span, row, first, (bx, l0, two), blocks, columns, n);
+            self.span_setup(span, (rows, wy), first, (bx, l0, two), blocks, columns, n);
             return;
         }
         // Most spans: one block along x, three columns (each holding every subset of the
@@ -226,7 +315,7 @@ impl<T> Wavelet<'_, T> {
             let (slot, key) = slot(first.wrapping_add(jx as i32), bx);
             if columns.keys[slot] != key {
                 let l_plus_n = l0 + jx + n;
-                self.fetch_column(columns, slot, key, blocks, row, bx, l_plus_n, n);
+                self.fetch_column(columns, slot, key, blocks, (rows, wy), bx, l_plus_n, n);
             }
             *at = (4 * slot) as u8;
         }
@@ -257,7 +346,7 @@ impl<T> Wavelet<'_, T> {
     fn span_setup<R: Real, const D: usize>(
         &self,
         span: &mut Span<R>,
-        row: &Row<R, D>,
+        (rows, wy): (&[Row<R, D>], &GroupWeights<R>),
         first: i32,
         (bx, l0, two): (i32, usize, bool),
         blocks: &mut [Block; BLOCKS],
@@ -267,6 +356,9 @@ impl<T> Wavelet<'_, T> {
         T: TileData<D>,
     {
         let h = self.half_width::<D>();
+        let Some(row) = rows.first() else {
+            return;
+        };
         span.first = Some(first);
         span.two = two;
         span.count = 0;
@@ -295,7 +387,7 @@ impl<T> Wavelet<'_, T> {
                 if columns.keys[slot] != key {
                     // The local index in block b, plus n: l0 + jx − n·mx + n.
                     let l_plus_n = l0 + jx + n - n * mx;
-                    self.fetch_column(columns, slot, key, blocks, row, b, l_plus_n, n);
+                    self.fetch_column(columns, slot, key, blocks, (rows, wy), b, l_plus_n, n);
                 }
                 *at = (4 * slot) as u8;
             }
@@ -311,8 +403,9 @@ impl<T> Wavelet<'_, T> {
     }
 
     /// Fetches into `slot` (now `key`'s) the column at local index `l_plus_n − n` of block
-    /// `b` along x, for every subset of the row's crossing y/z axes, setting the block up
-    /// first if the block cache does not hold it.
+    /// `b` along x for each row, for every subset of the rows' crossing y/z axes, setting the
+    /// block up first if the block cache does not hold it. The rows share their lines of
+    /// coefficients along z (2D: their coefficients), each read once.
     #[allow(
         clippy::too_many_arguments,
         reason = "the row's state, passed apart to borrow"
@@ -324,13 +417,16 @@ impl<T> Wavelet<'_, T> {
         slot: usize,
         key: u64,
         blocks: &mut [Block; BLOCKS],
-        row: &Row<R, D>,
+        (rows, wy): (&[Row<R, D>], &GroupWeights<R>),
         b: i32,
         l_plus_n: usize,
         n: usize,
     ) where
         T: TileData<D>,
     {
+        let Some(row) = rows.first() else {
+            return;
+        };
         let block = &mut blocks[(b & 1) as usize % BLOCKS];
         if block.key != Some(b) {
             self.block_setup(block, row, b, n);
@@ -343,10 +439,9 @@ impl<T> Wavelet<'_, T> {
             let x = block.x[t & 3].offset(l_plus_n, n);
             // `add_block`'s column: lines along z, then along y, each coefficient outside
             // the block's reach weighing 0 (`exclude`).
-            let wy = &row.sides[t & 1][1];
             let wz = &row.sides[t >> (D - 2) & 1][D - 1];
-            let mut column = R::ZERO;
-            for (base, wy) in block.base[t & 3].iter().zip(wy) {
+            let mut column = [R::ZERO; GROUP];
+            for (jy, base) in block.base[t & 3].iter().enumerate() {
                 let line = if D == 3 {
                     let mut line = R::ZERO;
                     for (&b, wz) in base.iter().zip(wz) {
@@ -357,7 +452,10 @@ impl<T> Wavelet<'_, T> {
                 } else {
                     self.tile.flat_with(x + base[0], unit)
                 };
-                column = column.saturating_add(wy[0].mul_fraction(line));
+                // Every row of the group as a lane (the rows past it weigh 0, unused).
+                for (column, &wy) in column.iter_mut().zip(&wy[t & 1][jy % 3]) {
+                    *column = column.saturating_add(wy.mul_fraction(line));
+                }
             }
             columns.values[(4 * slot + (t & 3)) % (4 * SLOTS)] = column;
         }
@@ -369,12 +467,7 @@ impl<T> Wavelet<'_, T> {
     where
         T: TileData<D>,
     {
-        let mut row = Row {
-            block: [0; D],
-            local0: [0; D],
-            crossing: 0,
-            sides: [[[[R::ZERO]; 3]; D]; 2],
-        };
+        let mut row = Row::new();
         let axes = rest.iter().zip(row.block.iter_mut().zip(&mut row.local0));
         for (a, (&coordinate, (block, local0))) in axes.enumerate().skip(1) {
             let (first, weights) = bspline3(coordinate);
