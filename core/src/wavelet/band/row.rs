@@ -1,5 +1,5 @@
-//! One row of a grid through a wavelet band, bit for bit as [`Wavelet::evaluate`] samples each
-//! point, with the work the row's samples share done once.
+//! Rows of a grid through a wavelet band, bit for bit as [`Wavelet::evaluate`] samples each
+//! point, with the work the rows' samples share done once.
 //!
 //! Along a row only x changes, so every sample reads the same three coefficient indices along
 //! y (and z), in the same blocks, with the same weights; neighbouring samples read mostly the
@@ -12,7 +12,17 @@
 //! shift and orientation per axis, a remainder) is most of a point sample's cost under
 //! [`Tiling::Blended`](super::Tiling::Blended); the row pays it once per column and block.
 //!
-//! Both caches are fixed arrays on the stack (about 1.5 KB): no allocation, and any order of
+//! Samples go sixteen at a time (`LANES`): their first coefficients and weights as lanes,
+//! then each run of samples with the same first coefficient summed entry by entry across its
+//! lanes, so the compiler vectorises both; only the loops are interchanged, each sample's
+//! operations and their order are `evaluate`'s.
+//!
+//! Consecutive rows that read the same y/z coefficients with the same z weights (a z-slice's
+//! rows until the first y coefficient moves: 2 rows for a band with a coefficient every 2
+//! samples) go together, up to [`GROUP`]: one sweep along x for all of them, each line of
+//! coefficients read once and weighted by every row's y weights, the x weights computed once.
+//!
+//! The caches are fixed arrays on the stack (about 2 KB): no allocation, and any order of
 //! x values is correct (a grid with a negative or zero step, or one that jumps between
 //! blocks), only slower when x moves by more than the cache holds.
 
@@ -258,27 +268,37 @@ impl<T> Wavelet<'_, T> {
                     self.set_span(&mut span, (rows, &wy), first, caches, n, h);
                 }
                 let lanes = a..b.min(LANES);
-                // A long run: every lane (whole vectors, the extra lanes unused).
-                let whole = lanes.len() >= LANES / 2;
-                for (g, row_out) in out.chunks_exact_mut(len).enumerate().take(GROUP) {
-                    let mut sums = [R::ZERO; LANES];
-                    for &(mx, at) in span.blocks.iter().take(span.count) {
-                        for (j, &k) in at.iter().enumerate() {
-                            let column = columns.values[k as usize % (4 * SLOTS)][g];
-                            // The x weights in each block: `evaluate`'s (`sided`), with the
-                            // coefficients outside a block weighing 0 (`exclude`).
-                            let factor = span.two.then(|| span.factors[mx as usize & 1][j]);
-                            if whole {
-                                accumulate(&mut sums, &weights[j], column, factor);
-                            } else {
-                                let w = &weights[j][lanes.clone()];
-                                accumulate(&mut sums[lanes.clone()], w, column, factor);
+                for g in 0..rows.len().min(GROUP) {
+                    let at = g * len + start;
+                    let outs = out.get_mut(at + a..at + b).unwrap_or_default();
+                    let column = |k: u8| columns.values[k as usize % (4 * SLOTS)][g];
+                    // The x weights in each block: `evaluate`'s (`sided`), with the
+                    // coefficients outside a block weighing 0 (`exclude`).
+                    let factor =
+                        |mx: u8, j: usize| span.two.then(|| span.factors[mx as usize & 1][j]);
+                    if lanes.len() >= LANES / 2 {
+                        // A long run: every lane (whole vectors, the extra lanes unused).
+                        let mut sums = [R::ZERO; LANES];
+                        for &(mx, at) in span.blocks.iter().take(span.count) {
+                            for (j, &k) in at.iter().enumerate() {
+                                accumulate(&mut sums, &weights[j], column(k), factor(mx, j));
                             }
                         }
-                    }
-                    let outs = row_out.get_mut(start + a..start + b).unwrap_or_default();
-                    for (o, &sum) in outs.iter_mut().zip(&sums[lanes.clone()]) {
-                        put(o, sum.canonical());
+                        for (o, &sum) in outs.iter_mut().zip(&sums[lanes.clone()]) {
+                            put(o, sum.canonical());
+                        }
+                    } else {
+                        // A short run (fine bands: a span every sample or two): lane by lane.
+                        for (o, l) in outs.iter_mut().zip(lanes.clone()) {
+                            let mut sum = [R::ZERO];
+                            for &(mx, at) in span.blocks.iter().take(span.count) {
+                                for (j, &k) in at.iter().enumerate() {
+                                    let w = core::slice::from_ref(&weights[j][l % LANES]);
+                                    accumulate(&mut sum, w, column(k), factor(mx, j));
+                                }
+                            }
+                            put(o, sum[0].canonical());
+                        }
                     }
                 }
                 a = b;
@@ -288,7 +308,7 @@ impl<T> Wavelet<'_, T> {
 
     /// Sets `span` for the samples whose first x coefficient is `first`, fetching the
     /// columns it reads that the cache does not hold.
-    #[inline]
+    #[inline(always)]
     fn set_span<R: Real, const D: usize>(
         &self,
         span: &mut Span<R>,
@@ -440,9 +460,9 @@ impl<T> Wavelet<'_, T> {
             // `add_block`'s column: lines along z, then along y, each coefficient outside
             // the block's reach weighing 0 (`exclude`).
             let wz = &row.sides[t >> (D - 2) & 1][D - 1];
-            let mut column = [R::ZERO; GROUP];
-            for (jy, base) in block.base[t & 3].iter().enumerate() {
-                let line = if D == 3 {
+            let mut lines = [R::ZERO; 3];
+            for (line, base) in lines.iter_mut().zip(&block.base[t & 3]) {
+                *line = if D == 3 {
                     let mut line = R::ZERO;
                     for (&b, wz) in base.iter().zip(wz) {
                         line = line
@@ -452,9 +472,18 @@ impl<T> Wavelet<'_, T> {
                 } else {
                     self.tile.flat_with(x + base[0], unit)
                 };
-                // Every row of the group as a lane (the rows past it weigh 0, unused).
-                for (column, &wy) in column.iter_mut().zip(&wy[t & 1][jy % 3]) {
-                    *column = column.saturating_add(wy.mul_fraction(line));
+            }
+            let mut column = [R::ZERO; GROUP];
+            if rows.len() == 1 {
+                for (&line, wy) in lines.iter().zip(&wy[t & 1]) {
+                    column[0] = column[0].saturating_add(wy[0].mul_fraction(line));
+                }
+            } else {
+                // Every row of the group as a lane (rows past it weigh 0, unused).
+                for (&line, wy) in lines.iter().zip(&wy[t & 1]) {
+                    for (column, &wy) in column.iter_mut().zip(wy) {
+                        *column = column.saturating_add(wy.mul_fraction(line));
+                    }
                 }
             }
             columns.values[(4 * slot + (t & 3)) % (4 * SLOTS)] = column;
