@@ -105,10 +105,15 @@ impl<R: Real> Noise<R, 3> for Sampled {
     }
 }
 
+/// The angle of flow noise's gradients at `time`: the description's, turned by time.
+fn turned_angle(spec: &Spec, time: f32) -> f32 {
+    spec.flow()[0] + time / FLOW_TIME_PER_TURN
+}
+
 /// Flow noise at `time` as `spec` (with its sum, if any) describes it.
 fn flow_noise(spec: &Spec, time: f32) -> Result<FlowNoise, Error> {
-    let [angle, spin, advection] = spec.flow();
-    let flow = Flow::new(spec.seed()).with_angle(angle + time / FLOW_TIME_PER_TURN)?;
+    let [_, spin, advection] = spec.flow();
+    let flow = Flow::new(spec.seed()).with_angle(turned_angle(spec, time))?;
     Ok(match spec.fractal() {
         None => FlowNoise::Plain(flow),
         Some((Kind::Fbm, octaves)) => FlowNoise::Fbm(
@@ -282,7 +287,7 @@ impl Params {
         match &self.noise {
             Sampled::Solid(n) => Some(n.spec().to_string()),
             Sampled::Flow(spec, _) => spec
-                .with_angle(spec.flow()[0] + self.time / FLOW_TIME_PER_TURN)
+                .with_angle(turned_angle(spec, self.time))
                 .ok()
                 .map(|s| s.to_string()),
         }

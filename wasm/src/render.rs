@@ -2,6 +2,7 @@
 
 use std::sync::OnceLock;
 
+use bandnoise::batch::Grid;
 use bandnoise::fractal::Fractal;
 use bandnoise::spec::{Base, Tiles};
 use bandnoise::wavelet::{
@@ -73,8 +74,8 @@ fn fill<R: Real, N: Noise<R, 3>>(noise: &N, p: &Params, size: usize, values: &mu
 
 /// The plane view's grid of `size × size` pixels: its first pixel's `(x, y)` and the step
 /// between pixels, in `f32`, centred on the pan. Pixel `(i, j)` is at `origin + (i, j)·step`
-/// computed in `f32`, as `bandnoise::Grid` computes it, so the batch path (the npm package's
-/// `fillGrid` on this grid) and [`fill_with`] sample the same points.
+/// computed in `f32` by `bandnoise::batch::Grid`, so the batch path (the npm package's
+/// `fillGrid` on this grid) and [`fill_with`] (its `Grid::point`) sample the same points.
 fn plane(p: &Params, size: usize) -> ([f32; 2], f32) {
     let step = 1.0 / p.zoom;
     let half = size as f32 / 2.0;
@@ -85,11 +86,11 @@ fn plane(p: &Params, size: usize) -> ([f32; 2], f32) {
 /// keeps the module small, for an indirect call per sample.
 fn fill_with<R: Real>(sample: &dyn Fn([R; 3]) -> R, p: &Params, size: usize, values: &mut [f32]) {
     let (origin, step) = plane(p, size);
+    let grid = Grid::new(origin, [step; 2], [size, values.len() / size.max(1)]);
     let t = R::from_f32(p.time);
     for (j, row) in values.chunks_mut(size).enumerate() {
-        let y = R::from_f32(origin[1] + j as f32 * step);
         for (i, v) in row.iter_mut().enumerate() {
-            let x = R::from_f32(origin[0] + i as f32 * step);
+            let [x, y] = grid.point([i, j]).map(R::from_f32);
             *v = sample([x, y, t]).to_f32();
         }
     }
