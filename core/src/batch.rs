@@ -186,15 +186,11 @@ pub(crate) fn for_each_row<R: Real, const D: usize>(
     out: &mut [R],
     mut row: impl FnMut([R; D], &mut [R]),
 ) -> Result<(), Error> {
-    check_len(grid.len(), out.len())?;
-    let row_len = grid.size[0];
-    if row_len == 0 || grid.is_empty() {
-        return Ok(());
-    }
-    for (r, row_out) in out.chunks_exact_mut(row_len).enumerate() {
-        row(grid.row_start(r), row_out);
-    }
-    Ok(())
+    for_each_rows::<R, D, 1>(grid, out, |starts, row_out| {
+        if let [start] = starts {
+            row(*start, row_out);
+        }
+    })
 }
 
 /// [`for_each_row`] `G` rows at a time: calls `rows(starts, values)` with the first points of

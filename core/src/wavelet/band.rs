@@ -234,12 +234,8 @@ pub(crate) fn bspline3_lanes<R: Real>(
 ) {
     let mut frac = [R::ZERO; LANES];
     R::split_lanes(x, first, &mut frac);
-    let half = R::from_ratio(1, 1);
     for (first, frac) in first.iter_mut().zip(&mut frac) {
-        // `bspline3_fraction`'s choice, as selects.
-        let up = *frac >= half;
-        *first = if up { *first } else { first.wrapping_sub(1) };
-        *frac = if up { *frac - half } else { *frac + half };
+        (*first, *frac) = minus_half(*first, *frac);
     }
     for l in 0..LANES {
         let [w0, w1, w2] = bspline3_weights(frac[l]);
@@ -250,9 +246,15 @@ pub(crate) fn bspline3_lanes<R: Real>(
 /// The first coefficient and the fraction `f` of `x − ½` behind [`bspline3`].
 #[inline]
 fn bspline3_fraction<R: Real>(x: R) -> (i32, R) {
-    let half = R::from_ratio(1, 1);
     let (cell, frac) = x.split();
-    // x − ½ without computing it (it could overflow fixed point at its minimum).
+    minus_half(cell, frac)
+}
+
+/// The cell and fraction of `x − ½` from those of `x`, without computing `x − ½` (it could
+/// overflow fixed point at its minimum).
+#[inline]
+fn minus_half<R: Real>(cell: i32, frac: R) -> (i32, R) {
+    let half = R::from_ratio(1, 1);
     if frac >= half {
         (cell, frac - half)
     } else {

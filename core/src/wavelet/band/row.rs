@@ -55,7 +55,7 @@ struct Block {
 /// z-slice, the rows until the first y coefficient moves) read each line of coefficients
 /// once for all of them, and compute their x weights once. One in WebAssembly, where V8's
 /// code for groups of 2 or 4 rows was slower than row by row (measured: bench/README.md,
-/// "wavelet rows in groups").
+/// "wavelet rows as lanes and in groups").
 pub(crate) const GROUP: usize = if cfg!(target_arch = "wasm32") { 1 } else { 4 };
 
 /// The column cache: slot `k` holds the column at one x index of one block along x
@@ -474,6 +474,8 @@ impl<T> Wavelet<'_, T> {
                 };
             }
             let mut column = [R::ZERO; GROUP];
+            // One row (fine bands' rows rarely share): no lanes, whose loop over `GROUP`
+            // rows cost the benchmark's default multiband grid 7% (bench/README.md).
             if rows.len() == 1 {
                 for (&line, wy) in lines.iter().zip(&wy[t & 1]) {
                     column[0] = column[0].saturating_add(wy[0].mul_fraction(line));
