@@ -18,7 +18,10 @@
 //! `F` sought. Every cell whose box of possible feature points is already farther than that
 //! `F` is skipped before it is hashed (Worley's pruning, "doubles the speed"); the point's
 //! cell and its neighbours are visited nearest first (own cell, faces, edges, corners), so
-//! the `F` found early prunes the rest. A 3³
+//! the `F` found early prunes the rest. On x86-64 in 3D, those 27 cells are hashed and placed
+//! whole instead and offered in the same order: the same `F1` and `F2` bit for bit, faster
+//! where a mispredicted prune costs more than the hashes it saves (`bench/README.md`,
+//! "cellular noise's near cells whole"). A 3³
 //! search, as most peers do, can miss `F2` (and, with the peers' looser placements, `F1`):
 //! with `jitter = 1` the second-nearest point can lie two cells away. How far the search can
 //! go is bounded: `F2` is never beyond the own cell's point and the near face neighbour's
@@ -209,6 +212,13 @@ impl Output {
 /// `1` in the 16.16 units of feature point positions.
 const UNIT: i32 = 1 << 16;
 
+/// Whether the search prunes rings 0 and 1 cell by cell in 3D ([`Cellular::search`]): on
+/// every target but x86-64, whose out-of-order cores search the whole 3³ faster than the
+/// pruned walk with its unpredictable branches (in 2D the two took the same time; measured
+/// in `bench/README.md`). On the in-order firmware cores pruning saves hashes; the demo's
+/// module has no room for the whole search's code; other hosts are not measured.
+const PRUNE_NEAR: bool = !cfg!(target_arch = "x86_64");
+
 /// The most rings searched around the point's cell: ring `r + 1` is at least `r` away along
 /// some axis, and `F2` is at most 4.5 away (Manhattan, 4D, jitter 1; see [`Cellular`]).
 const MAX_RING: i32 = 5;
@@ -221,6 +231,61 @@ static NEAR_1: [[i8; 4]; 3] = near_order(1);
 static NEAR_2: [[i8; 4]; 9] = near_order(2);
 static NEAR_3: [[i8; 4]; 27] = near_order(3);
 static NEAR_4: [[i8; 4]; 81] = near_order(4);
+
+/// For `D` = 1 to 3 (entry `D − 1`), each cell of the near table (`NEAR_1`, …) as the index
+/// [`Cellular::near_whole`] gives it: offset `k` is cell `Σ (kₐ + 1)·3^(D−1−a)` (axis 0 the
+/// most significant digit, as the hash chains fork).
+static NEAR_INDEX: [[u8; 27]; 3] = [
+    near_index(&NEAR_1),
+    near_index(&NEAR_2),
+    near_index(&NEAR_3),
+];
+
+/// For `D` = 1 to 3 (entry `D − 1`), the offset along axis `a` of cell `i` of the 3ᴰ as
+/// [`Cellular::near_whole`] numbers them: digit `a` of `i` in base 3, minus 1.
+static DIGITS: [[[i8; 27]; 3]; 3] = [digits(1), digits(2), digits(3)];
+
+const fn digits(dims: usize) -> [[i8; 27]; 3] {
+    let mut out = [[0; 27]; 3];
+    let mut count = 1;
+    let mut a = 0;
+    while a < dims {
+        count *= 3;
+        a += 1;
+    }
+    let mut i = 0;
+    while i < count {
+        let (mut rest, mut a) = (i, dims);
+        while a > 0 {
+            a -= 1;
+            out[a][i] = (rest % 3) as i8 - 1;
+            rest /= 3;
+        }
+        i += 1;
+    }
+    out
+}
+
+const fn near_index(near: &[[i8; 4]]) -> [u8; 27] {
+    let mut out = [0; 27];
+    let dims = match near.len() {
+        3 => 1,
+        9 => 2,
+        _ => 3,
+    };
+    let mut n = 0;
+    while n < near.len() {
+        let mut index = 0;
+        let mut a = 0;
+        while a < dims {
+            index = 3 * index + (near[n][a] + 1) as usize;
+            a += 1;
+        }
+        out[n] = index as u8;
+        n += 1;
+    }
+    out
+}
 
 /// The near table of `D` dimensions (1 to 4).
 fn near_table<const D: usize>() -> &'static [[i8; 4]] {
@@ -361,16 +426,19 @@ impl Cellular {
     #[inline]
     fn offsets<const D: usize>(&self, key: u32) -> [i32; D] {
         let bits = CellRng::from_key(key).next_u32();
+        core::array::from_fn(|a| self.axis_offset::<D>(bits, a))
+    }
+
+    /// Axis `a`'s offset of the feature point whose cell's first draw is `bits`
+    /// ([`offsets`](Self::offsets)).
+    #[inline]
+    fn axis_offset<const D: usize>(&self, bits: u32, a: usize) -> i32 {
         let width = if D <= 2 { 16 } else { 32 / D as u32 };
-        let mut out = [0; D];
-        for (a, o) in out.iter_mut().enumerate() {
-            // Axis a's `width` bits, as a multiple of 2⁻¹⁶ in [0, 1) (`& 31` only says the
-            // shift is in range to the compiler: it is below 32 for D ≤ 4).
-            let u = ((bits >> ((32 - width * (a as u32 + 1)) & 31)) & ((1 << width) - 1))
-                << (16 - width);
-            *o = self.offset(u as i32);
-        }
-        out
+        // Axis a's `width` bits, as a multiple of 2⁻¹⁶ in [0, 1) (`& 31` only says the
+        // shift is in range to the compiler: it is below 32 for D ≤ 4).
+        let u =
+            ((bits >> ((32 - width * (a as u32 + 1)) & 31)) & ((1 << width) - 1)) << (16 - width);
+        self.offset(u as i32)
     }
 
     /// The offset `½ + jitter·(u − ½)` across a cell of a point drawn at `u` (16.16, `u` in
@@ -447,6 +515,13 @@ impl Cellular {
     /// x86-64 (in 2D) but cost the demo's wasm module 7 KB, past its budget.
     #[inline(never)]
     fn search<R: Real, const D: usize>(&self, p: [R; D]) -> Nearest<R, D> {
+        self.search_in(p, D == 3 && !PRUNE_NEAR)
+    }
+
+    /// [`search`](Self::search), with rings 0 and 1 searched whole
+    /// ([`near_whole`](Self::near_whole)) or pruned cell by cell: the same result either way.
+    #[inline(always)]
+    fn search_in<R: Real, const D: usize>(&self, p: [R; D], whole: bool) -> Nearest<R, D> {
         let metric = self.metric;
         let (cell, frac) = split_point(p);
         let needs_f2 = self.output.needs_f2();
@@ -495,18 +570,22 @@ impl Cellular {
             }
         };
 
-        // Rings 0 and 1, the 3ᴰ cells around the point's, nearest boxes first (see
-        // `NEAR_1`); a cell whose box of possible points is out of reach is skipped before
-        // it is hashed. Axis a's box keys for offsets −1, 0, 1:
-        let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
-        for k in near_table::<D>() {
-            let k: [i32; D] = core::array::from_fn(|a| i32::from(k[a]));
-            let mut box_key = R::ZERO;
-            for a in 0..D {
-                // `min` says the index is in the table to the compiler (no bounds check).
-                box_key = metric.combine(box_key, near_gaps[a][((k[a] + 1) as usize).min(2)]);
+        if whole {
+            self.near_whole(cell, frac, &mut best);
+        } else {
+            // Rings 0 and 1, the 3ᴰ cells around the point's, nearest boxes first (see
+            // `NEAR_1`); a cell whose box of possible points is out of reach is skipped before
+            // it is hashed. Axis a's box keys for offsets −1, 0, 1:
+            let near_gaps: [[R; 3]; D] = core::array::from_fn(|a| [-1, 0, 1].map(|k| gap(a, k)));
+            for k in near_table::<D>() {
+                let k: [i32; D] = core::array::from_fn(|a| i32::from(k[a]));
+                let mut box_key = R::ZERO;
+                for a in 0..D {
+                    // `min` says the index is in the table to the compiler (no bounds check).
+                    box_key = metric.combine(box_key, near_gaps[a][((k[a] + 1) as usize).min(2)]);
+                }
+                visit(&k, box_key, &mut best);
             }
-            visit(&k, box_key, &mut best);
         }
 
         // The smallest margin between a cell's points and its borders, so ring r + 1 is at
@@ -539,6 +618,98 @@ impl Cellular {
         }
         best
     }
+}
+
+impl Cellular {
+    /// Rings 0 and 1 of [`search`](Self::search) whole, for up to 3 dimensions: every one of
+    /// the 3ᴰ cells around the point's (`cell`; the point at `frac` in it) hashed (the chains
+    /// sharing their prefixes), its point placed and its key taken, then the cells offered to
+    /// `best` nearest box first, in `NEAR_1`'s order.
+    ///
+    /// The same `best` as the pruned walk, bit for bit: a cell it prunes has a box whose key
+    /// is at least the reach, and every point in the box has a key at least the box's (the
+    /// same roundings of larger offsets), so offering it changes neither `F1` nor, where the
+    /// reach is `F2`, `F2` (with only `F1` sought it may replace the unused second key).
+    #[inline]
+    fn near_whole<R: Real, const D: usize>(
+        &self,
+        cell: [i32; D],
+        frac: [R; D],
+        best: &mut Nearest<R, D>,
+    ) {
+        let metric = self.metric;
+        // Cell i of the 3ᴰ is offset k_a = digit a of i in base 3, minus 1, axis 0 the most
+        // significant digit, so the hash chains (axis 0 folded first) fork digit by digit.
+        // (4D takes the pruned walk; `min` keeps its unused instance within the arrays.)
+        let axis = |a: usize| cell[a.min(D - 1)];
+        let first: [u32; 3] = fork(&self.hash, &[self.hash.start()], axis(0));
+        let hashes: [u32; 27] = match D {
+            1 => pad(&first),
+            2 => pad(&fork::<3, 9>(&self.hash, &first, axis(1))),
+            _ => fork(
+                &self.hash,
+                &fork::<3, 9>(&self.hash, &first, axis(1)),
+                axis(2),
+            ),
+        };
+        let count = 3usize.pow(D.min(3) as u32);
+        let digits = &DIGITS[(D - 1).min(2)];
+        let mut keys = [R::ZERO; 27];
+        let mut points = [[R::ZERO; 27]; D];
+        let bits: [u32; 27] = core::array::from_fn(|i| CellRng::from_key(hashes[i]).next_u32());
+        for a in 0..D {
+            for i in 0..count {
+                let k = i32::from(digits[a.min(2)][i]);
+                let q = R::from_ratio(k * UNIT + self.axis_offset::<D>(bits[i], a), 16) - frac[a];
+                points[a][i] = q;
+                keys[i] = metric.combine(keys[i], metric.axis_key(q.abs()));
+            }
+        }
+        // `Nearest::offer` over the cells in near order, on indices and with selects, not
+        // branches (which cell is nearer is a coin flip for a branch predictor).
+        let (mut key, mut index) = (best.keys, [0usize; 2]);
+        for &i in NEAR_INDEX[(D - 1).min(2)].iter().take(count) {
+            let i = usize::from(i).min(26);
+            let d = keys[i];
+            let (first, second) = (d < key[0], d < key[1]);
+            key[1] = if first {
+                key[0]
+            } else if second {
+                d
+            } else {
+                key[1]
+            };
+            index[1] = if first {
+                index[0]
+            } else if second {
+                i
+            } else {
+                index[1]
+            };
+            key[0] = if first { d } else { key[0] };
+            index[0] = if first { i } else { index[0] };
+        }
+        best.keys = key;
+        best.offsets = index.map(|i| core::array::from_fn(|a| points[a][i.min(26)]));
+        best.hash = hashes[index[0].min(26)];
+    }
+}
+
+/// The hash chains of `parents` each continued by the coordinates `c − 1`, `c`, `c + 1` of
+/// the next axis: chain `i` of the result continues parent `i / 3` by `c + i % 3 − 1`
+/// (`M = 3N`; constant sizes, so the loop unrolls).
+#[inline(always)]
+fn fork<const N: usize, const M: usize>(hash: &CellHash, parents: &[u32; N], c: i32) -> [u32; M] {
+    core::array::from_fn(|i| {
+        let k = (i % 3) as i32 - 1;
+        hash.step(parents[(i / 3).min(N - 1)], c.wrapping_add(k) as u32)
+    })
+}
+
+/// `hashes` in the first slots of 27.
+#[inline(always)]
+fn pad<const N: usize>(hashes: &[u32; N]) -> [u32; 27] {
+    core::array::from_fn(|i| hashes[i.min(N - 1)])
 }
 
 impl<R: Real, const D: usize> Nearest<R, D> {
@@ -639,6 +810,74 @@ crate::noise::inherent_amplitude_bound!(Cellular, []);
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::I16F16;
+
+    /// `NEAR_INDEX[d − 1]` is `near_order(d)` as indices whose base-3 digits, axis 0 the most
+    /// significant, are the offsets plus 1 (the near table's order is what resolves ties
+    /// between equal distances, so both searches must offer in it).
+    #[test]
+    fn near_index_follows_the_near_order() {
+        fn check(dims: usize, near: &[[i8; 4]]) {
+            assert_eq!(near.len(), 3usize.pow(dims as u32));
+            for (n, k) in near.iter().enumerate() {
+                let mut rest = usize::from(NEAR_INDEX[dims - 1][n]);
+                for a in (0..dims).rev() {
+                    assert_eq!((rest % 3) as i8 - 1, k[a], "{dims}D, cell {n}, axis {a}");
+                    rest /= 3;
+                }
+                assert_eq!(rest, 0);
+            }
+        }
+        check(1, &NEAR_1);
+        check(2, &NEAR_2);
+        check(3, &NEAR_3);
+    }
+
+    /// Rings 0 and 1 searched whole give what the pruned walk gives, bit for bit (keys,
+    /// offsets and the nearest cell's hash; with only `F1` sought, the second key may differ
+    /// and is not compared), for every metric, output and several jitters, in f32, f64 and
+    /// I16F16, at random points and at points on cell borders.
+    #[test]
+    fn whole_search_is_the_pruned_search() {
+        fn check<R: Real + core::fmt::Debug, const D: usize>(noise: &Cellular, p: [f32; D]) {
+            let p = p.map(R::from_f32);
+            let (a, b) = (noise.search_in(p, true), noise.search_in(p, false));
+            let n = if noise.output.needs_f2() { 2 } else { 1 };
+            assert_eq!(a.keys[..n], b.keys[..n], "{noise:?} at {p:?}");
+            assert_eq!(a.offsets[..n], b.offsets[..n], "{noise:?} at {p:?}");
+            assert_eq!(a.hash, b.hash, "{noise:?} at {p:?}");
+        }
+        let mut state = 0x1234_5678_9ABC_DEF0u64;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 40) as f32 / (1u32 << 24) as f32 - 0.5) * 64.0
+        };
+        for metric in Metric::ALL {
+            for output in Output::ALL {
+                for jitter in [0.0, 0.3, 0.8, 1.0] {
+                    let noise = Cellular::new(11)
+                        .with_metric(metric)
+                        .with_output(output)
+                        .with_jitter(jitter)
+                        .unwrap();
+                    for i in 0..400 {
+                        // Every tenth point on a cell border along its first axis.
+                        let x = if i % 10 == 0 { next().floor() } else { next() };
+                        let (y, z) = (next(), next());
+                        check::<f32, 1>(&noise, [x]);
+                        check::<f32, 2>(&noise, [x, y]);
+                        check::<f32, 3>(&noise, [x, y, z]);
+                        check::<f64, 2>(&noise, [x, y]);
+                        check::<f64, 3>(&noise, [x, y, z]);
+                        check::<I16F16, 2>(&noise, [x, y]);
+                        check::<I16F16, 3>(&noise, [x, y, z]);
+                    }
+                }
+            }
+        }
+    }
 
     /// `extent` is the lowest and highest `offset`, which grows with `u`, for every jitter.
     #[test]
