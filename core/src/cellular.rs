@@ -445,6 +445,11 @@ impl Cellular {
     /// `0..UNIT`), floored.
     #[inline]
     fn offset(&self, u: i32) -> i32 {
+        if self.jitter == UNIT {
+            // The default, where the formula gives `u` itself: the search's loops over cells
+            // then run without the multiply.
+            return u;
+        }
         // In i32: −2¹⁵ ≤ u − ½ < 2¹⁵ and 0 ≤ jitter ≤ 2¹⁶, so the product is in [−2³¹, 2³¹).
         UNIT / 2 + (((u - UNIT / 2) * self.jitter) >> 16)
     }
@@ -895,6 +900,9 @@ mod tests {
                     noise.offset(u - 1) <= noise.offset(u),
                     "jitter {jitter}, u {u}"
                 );
+                // The shortcut for jitter 1 is the formula's value.
+                let formula = UNIT / 2 + (((u - UNIT / 2) * jitter) >> 16);
+                assert_eq!(noise.offset(u), formula, "jitter {jitter}, u {u}");
             }
             let (first, last) = (noise.offset(0), noise.offset(UNIT - 1));
             assert_eq!(noise.extent(), (first, last), "jitter {jitter}");
