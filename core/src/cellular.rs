@@ -158,6 +158,19 @@ impl<R: Real, const D: usize> Nearest<R, D> {
         }
     }
 
+    /// [`offer`](Self::offer) where only the nearest is sought: keeps the point if it is
+    /// the nearest so far (the second key is left as it is), by selects rather than a
+    /// branch, which is a coin flip for a predictor.
+    #[inline]
+    fn offer_first(&mut self, d: R, q: [R; D], key: u32) {
+        let nearer = d < self.keys[0];
+        self.keys[0] = if nearer { d } else { self.keys[0] };
+        for (o, q) in self.offsets[0].iter_mut().zip(q) {
+            *o = if nearer { q } else { *o };
+        }
+        self.hash = if nearer { key } else { self.hash };
+    }
+
     /// `F1` (`i = 0`) or `F2` (`i = 1`) in `metric`. The Euclidean distance is the length of
     /// the offset ([`norm`](crate::real::sealed::Sealed::norm)): in fixed point the square
     /// root of the rounded key would lose short distances (`√(2⁻¹⁶)` is 2⁻⁸).
@@ -546,7 +559,11 @@ impl Cellular {
                 q[a] = R::from_ratio(k[a] * UNIT + offsets[a], 16) - frac[a];
                 d = metric.combine(d, metric.axis_key(q[a].abs()));
             }
-            best.offer(d, q, key);
+            if needs_f2 {
+                best.offer(d, q, key);
+            } else {
+                best.offer_first(d, q, key);
+            }
         };
         // How far the box of cell k's possible points lies from the point along axis a.
         let gap = |a: usize, k: i32| -> R {
