@@ -160,7 +160,8 @@ impl<R: Real, const D: usize> Nearest<R, D> {
 
     /// [`offer`](Self::offer) where only the nearest is sought: keeps the point if it is
     /// the nearest so far (the second key is left as it is), by selects rather than a
-    /// branch, which is a coin flip for a predictor.
+    /// branch, which is a coin flip for a predictor. Where the search prunes
+    /// ([`PRUNE_NEAR`]: in-order cores, wasm32) `offer` is the faster of the two.
     #[inline]
     fn offer_first(&mut self, d: R, q: [R; D], key: u32) {
         let nearer = d < self.keys[0];
@@ -559,7 +560,7 @@ impl Cellular {
                 q[a] = R::from_ratio(k[a] * UNIT + offsets[a], 16) - frac[a];
                 d = metric.combine(d, metric.axis_key(q[a].abs()));
             }
-            if needs_f2 {
+            if needs_f2 || PRUNE_NEAR {
                 best.offer(d, q, key);
             } else {
                 best.offer_first(d, q, key);
