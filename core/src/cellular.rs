@@ -160,8 +160,9 @@ impl<R: Real, const D: usize> Nearest<R, D> {
 
     /// [`offer`](Self::offer) where only the nearest is sought: keeps the point if it is
     /// the nearest so far (the second key is left as it is), by selects rather than a
-    /// branch, which is a coin flip for a predictor. Where the search prunes
-    /// ([`PRUNE_NEAR`]: in-order cores, wasm32) `offer` is the faster of the two.
+    /// branch, which is a coin flip for a predictor. Only on x86-64 (where [`PRUNE_NEAR`] is
+    /// false): on the firmware cores `offer`'s branches are the cheaper (measured); wasm32
+    /// keeps `offer` unmeasured.
     #[inline]
     fn offer_first(&mut self, d: R, q: [R; D], key: u32) {
         let nearer = d < self.keys[0];
@@ -228,9 +229,10 @@ const UNIT: i32 = 1 << 16;
 
 /// Whether the search prunes rings 0 and 1 cell by cell in 3D ([`Cellular::search`]): on
 /// every target but x86-64, whose out-of-order cores search the whole 3³ faster than the
-/// pruned walk with its unpredictable branches (in 2D the two took the same time; measured
+/// pruned walk with its unpredictable branches (in 2D the pruned walk was faster; measured
 /// in `bench/README.md`). On the in-order firmware cores pruning saves hashes; the demo's
-/// module has no room for the whole search's code; other hosts are not measured.
+/// module has no room for the whole search's code; other hosts are not measured. Where it
+/// is true the pruned walk also keeps `F1` by branches ([`Nearest::offer_first`]).
 const PRUNE_NEAR: bool = !cfg!(target_arch = "x86_64");
 
 /// The most rings searched around the point's cell: ring `r + 1` is at least `r` away along
