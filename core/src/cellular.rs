@@ -146,15 +146,8 @@ impl<R: Real, const D: usize> Nearest<R, D> {
     /// nearer than the second-nearest so far.
     #[inline]
     fn offer(&mut self, d: R, q: [R; D], key: u32) {
-        if d < self.keys[0] {
-            self.keys[1] = self.keys[0];
-            self.offsets[1] = self.offsets[0];
-            self.keys[0] = d;
-            self.offsets[0] = q;
+        if keep_nearest(&mut self.keys, &mut self.offsets, d, q) {
             self.hash = key;
-        } else if d < self.keys[1] {
-            self.keys[1] = d;
-            self.offsets[1] = q;
         }
     }
 
@@ -183,6 +176,24 @@ impl<R: Real, const D: usize> Nearest<R, D> {
             _ => self.keys[i],
         }
     }
+}
+
+/// Keeps `item`, at key `d`, among the nearest two `items` (keys `keys`, nearest first) if
+/// it is nearer than the second: the earlier one stays ahead on ties. Whether it became the
+/// nearest. ([`Nearest::offer`] keeps offsets; [`Cellular::near_whole`] cell indices.)
+#[inline(always)]
+fn keep_nearest<R: Real, T: Copy>(keys: &mut [R; 2], items: &mut [T; 2], d: R, item: T) -> bool {
+    let nearest = d < keys[0];
+    if nearest {
+        keys[1] = keys[0];
+        items[1] = items[0];
+        keys[0] = d;
+        items[0] = item;
+    } else if d < keys[1] {
+        keys[1] = d;
+        items[1] = item;
+    }
+    nearest
 }
 
 /// What cellular noise returns.
@@ -232,7 +243,7 @@ const UNIT: i32 = 1 << 16;
 /// pruned walk with its unpredictable branches (in 2D the pruned walk was faster; measured
 /// in `bench/README.md`). On the in-order firmware cores pruning saves hashes; the demo's
 /// module has no room for the whole search's code; other hosts are not measured. Where it
-/// is true the pruned walk also keeps `F1` by branches ([`Nearest::offer_first`]).
+/// is true the pruned walk also keeps `F1` with `offer`, not [`Nearest::offer_first`].
 const PRUNE_NEAR: bool = !cfg!(target_arch = "x86_64");
 
 /// The most rings searched around the point's cell: ring `r + 1` is at least `r` away along
@@ -690,29 +701,11 @@ impl Cellular {
                 keys[i] = metric.combine(keys[i], metric.axis_key(q.abs()));
             }
         }
-        // `Nearest::offer` over the cells in near order, on indices and with selects, not
-        // branches (which cell is nearer is a coin flip for a branch predictor).
+        // `Nearest::offer` over the cells in near order, on indices.
         let (mut key, mut index) = (best.keys, [0usize; 2]);
         for &i in NEAR_INDEX[(D - 1).min(2)].iter().take(count) {
             let i = usize::from(i).min(26);
-            let d = keys[i];
-            let (first, second) = (d < key[0], d < key[1]);
-            key[1] = if first {
-                key[0]
-            } else if second {
-                d
-            } else {
-                key[1]
-            };
-            index[1] = if first {
-                index[0]
-            } else if second {
-                i
-            } else {
-                index[1]
-            };
-            key[0] = if first { d } else { key[0] };
-            index[0] = if first { i } else { index[0] };
+            keep_nearest(&mut key, &mut index, keys[i], i);
         }
         best.keys = key;
         best.offsets = index.map(|i| core::array::from_fn(|a| points[a][i.min(26)]));
