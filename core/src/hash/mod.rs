@@ -16,6 +16,7 @@ mod bbs;
 mod cell;
 pub(crate) mod chain;
 mod perm;
+pub(crate) mod prime;
 mod rng;
 pub(crate) mod seed;
 

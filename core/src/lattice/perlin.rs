@@ -62,13 +62,6 @@ impl Perlin {
         }
     }
 
-    /// The hash chain, for the noises that hash Perlin's way on other lattices (simplex
-    /// noise).
-    #[inline]
-    pub(crate) fn chain(&self) -> &Doubled {
-        &self.p
-    }
-
     /// The doubled permutation, for the target kernels of [`arch`].
     #[inline]
     pub(crate) fn doubled(&self) -> &[u8; 512] {
@@ -457,6 +450,31 @@ impl Lattice<4> for Perlin {
         let g: &[R; 4] = &Grad4::<R>::TABLE[(h & 31) as usize];
         *g
     }
+}
+
+/// Perlin's gradient in `D` dimensions for the low bits of `h`, as [`Lattice::gradient`]
+/// (1D slopes, [`GRAD3`]'s rows, 2D their x and y, [`grad4`]'s rows): for noises that pick
+/// Perlin's gradients with another hash (simplex noise).
+#[inline(always)]
+pub(crate) fn gradient_of<R: Real, const D: usize>(h: u32) -> [R; D] {
+    let mut g = [R::ZERO; D];
+    match D {
+        1 => g[0] = signed(h, 2, R::from_ratio((h & 3) as i32 + 1, 2)),
+        2 | 3 => {
+            // References, so the tables are promoted to statics.
+            let row: &[R; 3] = &Grad3::<R>::TABLE[(h & 15) as usize];
+            for (c, r) in g.iter_mut().zip(row) {
+                *c = *r;
+            }
+        }
+        _ => {
+            let row: &[R; 4] = &Grad4::<R>::TABLE[(h & 31) as usize];
+            for (c, r) in g.iter_mut().zip(row) {
+                *c = *r;
+            }
+        }
+    }
+    g
 }
 
 /// The 4D gradient of hash `h`: one of the 32 edges of the tesseract, its zero axis

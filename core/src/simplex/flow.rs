@@ -5,7 +5,7 @@
 //! vanish. Perlin and Neyret instead turn every lattice gradient by the same angle over time:
 //! the gradients stay uncorrelated with each other at every angle, so the noise keeps its
 //! statistics while its features *swirl* in place, as in a flow. This needs gradients that
-//! can turn by any angle, so each corner's hash picks a direction `h/256` of a turn (256
+//! can turn by any angle, so the top 8 bits `h` of each corner's hash pick a direction `h/256` of a turn (256
 //! evenly spaced unit vectors, as Gustavson and McEwan's psrdnoise picks an angle from its
 //! hash), and the animation adds `α`: `g = (cos 2π(h/256 + α), sin 2π(h/256 + α))`, computed
 //! as the direction `h/256` (a table of 256 cosines, built by `const fn`) turned by `α` (its
@@ -18,7 +18,7 @@
 use super::{Gradients, simplex};
 use crate::batch::LANES;
 use crate::fractal::Octaves;
-use crate::lattice::Perlin;
+use crate::hash::prime::PrimeHash;
 use crate::special::{cos_f64, q30};
 use crate::{Error, I16F16, Real};
 
@@ -53,7 +53,7 @@ const SCALE: i32 = 406_340;
 ///   so `α` and `α + 1` give the same noise); set by [`with_angle`](Self::with_angle), 0 by
 ///   default. Animate by increasing it with time; Perlin and Neyret turn successive octaves of
 ///   a fractal sum at rates such as 1, 2, 4 (turbulence-like) or 1, 1, 1.
-/// * **Seed**: [`Simplex`](super::Simplex)'s (Perlin's permutation for the seed).
+/// * **Seed**: [`Simplex`](super::Simplex)'s hash of the corners and the seed.
 /// * **Range**: `|n| ≤ 1`: the scale sets the largest value over every choice of gradient
 ///   directions to 1 (module docs); [`Noise::amplitude_bound`] adds 2⁻¹⁰ for rounding and
 ///   the cosine table's error.
@@ -79,7 +79,7 @@ const SCALE: i32 = 406_340;
 /// [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
 #[derive(Clone, Debug, PartialEq)]
 pub struct Flow {
-    perlin: Perlin,
+    hash: PrimeHash,
     angle: f32,
     /// `cos 2πα` and `sin 2πα` as settings: `f32`, and rounded once to I16F16.
     turn: [(f32, I16F16); 2],
@@ -90,7 +90,7 @@ impl Flow {
     #[must_use]
     pub const fn new(seed: u32) -> Self {
         Self {
-            perlin: Perlin::new(seed),
+            hash: PrimeHash::new(seed),
             angle: 0.0,
             turn: [(1.0, I16F16::ONE), (0.0, I16F16::ZERO)],
         }
@@ -154,7 +154,8 @@ struct Turned<'a> {
 impl<R: Real> Gradients<R, 2> for Turned<'_> {
     #[inline(always)]
     fn gradient(&self, h: u32) -> [R; 2] {
-        turned(h, self.turn)
+        // The direction from the hash's top 8 bits.
+        turned(h >> 24, self.turn)
     }
     #[inline(always)]
     fn times(d: R, g: R) -> R {
@@ -175,7 +176,7 @@ impl Flow {
         gradient: &mut [[R; N]; 2],
     ) {
         let gradients = Turned { turn };
-        simplex::<R, _, 2, N, GRADIENT>(self.perlin.chain(), &gradients, SCALE, p, value, gradient);
+        simplex::<R, _, 2, N, GRADIENT>(&self.hash, &gradients, SCALE, p, value, gradient);
     }
 }
 

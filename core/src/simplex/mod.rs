@@ -26,12 +26,19 @@
 //! body over 16 points at once, each step a loop over the points, so that the arithmetic
 //! vectorises: the same operations on the same numbers as a point sample, bit for bit.
 //!
-//! **Hash and gradients** are [`Perlin`]'s: the seed's permutation
-//! folded over a corner's cell with x innermost (`p[p[p[x] + y] + z]`, each coordinate mod
-//! 256, so the noise repeats every 256 cells along each skewed lattice axis), 1D slopes
-//! `±¼ … ±1`, the 12 cube edges in 3D (Perlin's `grad`, as Gustavson's `grad3`), their
-//! projections onto the plane in 2D, the 32 tesseract edges in 4D (Gustavson's `grad4`).
-//! Dot products with gradient components in `{−1, 0, 1}` are additions.
+//! **Hash**: a corner `c` hashes to `(s ⊕ c₀·P₀ ⊕ c₁·P₁ ⊕ …) · M` in wrapping 32-bit
+//! integers, `s` a mix of the seed, `Pₐ` a prime per axis and `M` an odd multiplier
+//! (FastNoise Lite's primes and multiplier), and the gradient is chosen by the product's top
+//! bits, the best mixed. No table and no chain of dependent loads (a permutation chain such as
+//! [`Perlin`]'s `p[p[x] + y]` must be looked up lane by lane and repeats every 256 cells): a
+//! batch hashes 4 lanes per vector instruction, and the noise repeats only every 2³² cells.
+//! The top bits' statistics are tested (uniform, independent of the neighbours').
+//!
+//! **Gradients** are Perlin's sets: 1D slopes `±¼ … ±1` (3 bits), the 12 cube edges in 3D
+//! (Perlin's `grad`, as Gustavson's `grad3`; 4 bits), their projections onto the plane in 2D,
+//! the 32 tesseract edges in 4D (Gustavson's `grad4`; 5 bits). Dot products with gradient
+//! components in `{−1, 0, 1}` are additions: a point sample reads the gradient's row from a
+//! table, a batch picks the signed offsets by selects (the same values).
 //!
 //! **No periodic variant**: the simplicial lattice's periods lie along the skewed axes, not
 //! along x and y, so a rectangle of simplex noise cannot be tiled seamlessly by wrapping the
@@ -63,8 +70,8 @@ pub use open::{Improve, OpenSimplex2, OpenSimplex2S};
 
 use crate::Real;
 use crate::batch::LANES;
-use crate::hash::chain::{ChainHash, Doubled};
-use crate::lattice::{Lattice, Perlin};
+use crate::hash::prime::PrimeHash;
+use crate::lattice::perlin::gradient_of;
 
 /// Simplex noise in 1 to 4 dimensions, continuous (C²) with its analytic gradient.
 ///
@@ -72,14 +79,14 @@ use crate::lattice::{Lattice, Perlin};
 ///   integer cells.
 /// * **Kernel**: `(1 − |d|²/r²)⁴ (g·d)` per corner, `r² = ½` (1D: `r² = 1`), scaled so the
 ///   largest value is 1.
-/// * **Hash and gradients**: [`Perlin`]'s permutation for the seed (seed 0 is Perlin's 2002
-///   table) and his gradient sets (module docs).
+/// * **Hash and gradients**: a multiplicative hash of each corner and the seed, its top bits
+///   choosing one of Perlin's gradients (module docs).
 /// * **Range**: `|n| ≤ 1`, measured: the largest value over all gradient choices, found by a
 ///   grid search over a skewed cell refined by coordinate ascent (`tests/tests/simplex.rs`;
 ///   1D: 81/256 at a cell's middle, exactly), sets the scale; [`Noise::amplitude_bound`] adds
 ///   2⁻¹⁰ for rounding. The proved bound is looser: `D + 1` corners at their single peak,
 ///   `(8/9)⁴ r/3` times the steepest gradient's length, 1.3 (1D) to 5 (4D) times the maximum.
-///   Measured variance 0.149, 0.200, 0.154, 0.064 (1D–4D).
+///   Measured variance 0.145, 0.200, 0.154, 0.064 (1D–4D).
 /// * **Fixed point** follows `f32` within 5.3·10⁻⁴ (4D; 3.9·10⁻⁴ in 2D, measured over
 ///   2·10⁵ points of `|x| < 256`): each rounding of `τ = 1 − |d|²/r²` is amplified by the
 ///   fourth power's slope and by the scale.
@@ -89,16 +96,16 @@ use crate::lattice::{Lattice, Perlin};
 /// [`Noise::amplitude_bound`]: crate::Noise::amplitude_bound
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Simplex {
-    perlin: Perlin,
+    hash: PrimeHash,
 }
 
 impl Simplex {
-    /// Simplex noise for `seed`. `const`, so `static NOISE: Simplex = Simplex::new(7);` builds
-    /// the permutation at compile time.
+    /// Simplex noise for `seed`. `const`, so `static NOISE: Simplex = Simplex::new(7);` works;
+    /// the noise is 4 bytes (the mixed seed).
     #[must_use]
     pub const fn new(seed: u32) -> Self {
         Self {
-            perlin: Perlin::new(seed),
+            hash: PrimeHash::new(seed),
         }
     }
 }
@@ -111,21 +118,52 @@ impl Default for Simplex {
 
 /// Where the corners of a simplex noise take their gradients from their hashes.
 pub(crate) trait Gradients<R: Real, const D: usize> {
-    /// The gradient of the corner whose hash is `h` (below 256).
+    /// The gradient of the corner whose hash is `h` (32 bits: each set reads its top bits,
+    /// the best mixed).
     fn gradient(&self, h: u32) -> [R; D];
     /// `d · g` for an offset component `d` (below 2) and a gradient component `g`.
     fn times(d: R, g: R) -> R;
+    /// `g · d` for the corner whose hash is `h`: the sum of [`times`](Self::times) in axis
+    /// order (a point sample's form: one table row per corner).
+    #[inline(always)]
+    fn dot(&self, h: u32, d: &[R; D]) -> R {
+        let g = self.gradient(h);
+        let mut sum = R::ZERO;
+        for a in 0..D {
+            sum = sum + Self::times(d[a], g[a]);
+        }
+        sum
+    }
+    /// [`dot`](Self::dot) in a form that vectorises over lanes (a set may compute it by
+    /// selects instead of a table: the same value; a zero's sign may differ, which sampling
+    /// canonicalises).
+    #[inline(always)]
+    fn dot_lanes(&self, h: u32, d: &[R; D]) -> R {
+        self.dot(h, d)
+    }
 }
 
-/// Perlin's gradient sets (module docs): components are exact units in 2D–4D, so a product is
-/// an addition or a multiply that reads the unit; slopes in 1D.
-impl<R: Real, const D: usize> Gradients<R, D> for Perlin
-where
-    Perlin: Lattice<D>,
-{
+/// Perlin's gradient sets (module docs), chosen by the hash's top bits: 1D slopes
+/// `±¼ … ±1` (3 bits), the 12 cube edges of his `grad` in 2D and 3D (4 bits; 2D takes their
+/// x and y), the 32 tesseract edges in 4D (5 bits).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct PerlinGradients;
+
+impl PerlinGradients {
+    /// The hash bits a `dims`-dimensional gradient is chosen by.
+    const fn bits(dims: usize) -> u32 {
+        match dims {
+            1 => 3,
+            2 | 3 => 4,
+            _ => 5,
+        }
+    }
+}
+
+impl<R: Real, const D: usize> Gradients<R, D> for PerlinGradients {
     #[inline(always)]
     fn gradient(&self, h: u32) -> [R; D] {
-        Lattice::<D>::gradient(self, h)
+        gradient_of(h >> (32 - Self::bits(D)))
     }
     #[inline(always)]
     fn times(d: R, g: R) -> R {
@@ -133,6 +171,43 @@ where
             d.mul_fraction(g)
         } else {
             d.mul_unit(g)
+        }
+    }
+    /// Components are exact units in 2D–4D, so the dot product is a signed sum of offsets,
+    /// chosen by selects.
+    #[inline(always)]
+    fn dot_lanes(&self, h: u32, d: &[R; D]) -> R {
+        let b = h >> (32 - Self::bits(D));
+        match D {
+            2 | 3 => {
+                // Perlin's grad: ±u ± v, u = b < 8 ? x : y, v = b < 4 ? y : (b is 12 or 14 ?
+                // x : z), signs from bits 0 and 1.
+                let (x, y) = (d[0], d[1 % D]);
+                let z = if D == 3 { d[2 % D] } else { R::ZERO };
+                let u = if b < 8 { x } else { y };
+                let v = if b < 4 {
+                    y
+                } else if b == 12 || b == 14 {
+                    x
+                } else {
+                    z
+                };
+                u.negate_if(b) + v.negate_if(b >> 1)
+            }
+            4 => {
+                // Every axis but the zero one `(b >> 3) & 3`, signs from bits 0–2 in order.
+                let zero = b >> 3 & 3;
+                let mut sum = R::ZERO;
+                let mut bit = 0;
+                for a in 0..D {
+                    let skip = a as u32 == zero;
+                    let term = d[a].negate_if(b >> bit);
+                    sum = sum + if skip { R::ZERO } else { term };
+                    bit += u32::from(!skip);
+                }
+                sum
+            }
+            _ => self.dot(h, d),
         }
     }
 }
@@ -234,7 +309,7 @@ const fn inverse_radius_shift(dims: usize) -> u32 {
     reason = "each step loops over the lanes innermost, indexing the axis arrays, so that it vectorises"
 )]
 pub(crate) fn simplex<R, G, const D: usize, const N: usize, const GRADIENT: bool>(
-    chain: &Doubled,
+    hash: &PrimeHash,
     gradients: &G,
     scale: i32,
     p: &[[R; N]; D],
@@ -271,6 +346,13 @@ pub(crate) fn simplex<R, G, const D: usize, const N: usize, const GRADIENT: bool
             offset[a][l] = offset[a][l] - back;
         }
     }
+    // Each axis's hash term `c·Pₐ` of the first corner's cell.
+    let mut term = [[0u32; N]; D];
+    for a in 0..D {
+        for l in 0..N {
+            term[a][l] = PrimeHash::axis(a, cell[a][l]);
+        }
+    }
     let shift = inverse_radius_shift(D);
     *value = [R::ZERO; N];
     *gradient = [[R::ZERO; N]; D];
@@ -302,27 +384,34 @@ pub(crate) fn simplex<R, G, const D: usize, const N: usize, const GRADIENT: bool
             }
             tau[l] = if t > R::ZERO { t } else { R::ZERO };
         }
-        // The corners' gradients, lane by lane (table lookups)...
+        // The corners' hashes and dot products: integer products and selects over all
+        // lanes (no table), then the kernel.
+        let mut dot = [R::ZERO; N];
         let mut g = [[R::ZERO; N]; D];
         for l in 0..N {
-            let mut h = 0;
+            let mut h = hash.start();
+            let mut dl = [R::ZERO; D];
             for a in 0..D {
-                let step = u32::from(rank[a][l] + j as u32 >= D as u32);
-                // Reduced here rather than kept in an array: the bound `≤ 256` stays visible,
-                // so the doubled table's lookup needs no bounds check.
-                h = chain.step(h, Doubled::reduce(cell[a][l]) + step);
+                let step = rank[a][l] + j as u32 >= D as u32;
+                // (c + 1)·P = c·P + P, wrapping.
+                h ^= term[a][l].wrapping_add(if step { PrimeHash::PRIMES[a & 3] } else { 0 });
+                dl[a] = d[a][l];
             }
-            let row = gradients.gradient(h);
-            for a in 0..D {
-                g[a][l] = row[a];
+            let h = PrimeHash::finish(h);
+            dot[l] = if N == 1 {
+                gradients.dot(h, &dl)
+            } else {
+                gradients.dot_lanes(h, &dl)
+            };
+            if GRADIENT {
+                let row = gradients.gradient(h);
+                for a in 0..D {
+                    g[a][l] = row[a];
+                }
             }
         }
-        // ... then the kernel over all lanes at once.
         for l in 0..N {
-            let mut dot = R::ZERO;
-            for a in 0..D {
-                dot = dot + G::times(d[a][l], g[a][l]);
-            }
+            let dot = dot[l];
             let tau2 = tau[l].mul_fraction(tau[l]);
             let tau4 = tau2.mul_fraction(tau2);
             // τ⁴ ≤ 1 and the other factors are small (below): every product fits, so the
@@ -364,7 +453,7 @@ macro_rules! simplex_impls {
             fn sample(&self, p: [R; $d]) -> R {
                 let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
                 let p = p.map(|x| [x]);
-                simplex::<R, _, $d, 1, false>(self.perlin.chain(), &self.perlin, SCALE[$d], &p, &mut value, &mut gradient);
+                simplex::<R, _, $d, 1, false>(&self.hash, &PerlinGradients, SCALE[$d], &p, &mut value, &mut gradient);
                 value[0]
             }
             fn amplitude_bound(&self) -> f32 {
@@ -372,7 +461,7 @@ macro_rules! simplex_impls {
             }
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
                 let mut gradient = [[R::ZERO; LANES]; $d];
-                simplex::<R, _, $d, LANES, false>(self.perlin.chain(), &self.perlin, SCALE[$d], p, out, &mut gradient);
+                simplex::<R, _, $d, LANES, false>(&self.hash, &PerlinGradients, SCALE[$d], p, out, &mut gradient);
             }
         }
 
@@ -381,7 +470,7 @@ macro_rules! simplex_impls {
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
                 let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
                 let p = p.map(|x| [x]);
-                simplex::<R, _, $d, 1, true>(self.perlin.chain(), &self.perlin, SCALE[$d], &p, &mut value, &mut gradient);
+                simplex::<R, _, $d, 1, true>(&self.hash, &PerlinGradients, SCALE[$d], &p, &mut value, &mut gradient);
                 (value[0], gradient.map(|g| g[0]))
             }
         }
