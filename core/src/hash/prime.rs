@@ -87,7 +87,11 @@ mod tests {
             let mut single = [0u32; 16];
             let mut worst_pair = 0.0f64;
             let steps = [[1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1], [1, 1, 1]];
-            for (k, step) in steps.into_iter().enumerate().take(if dims == 3 { 5 } else { 3 }) {
+            for (k, step) in steps
+                .into_iter()
+                .enumerate()
+                .take(if dims == 3 { 5 } else { 3 })
+            {
                 let mut pairs = [0u32; 256];
                 for x in 0..n {
                     for y in 0..n {
@@ -108,11 +112,17 @@ mod tests {
         for seed in [0, 1, 2, 1234, u32::MAX] {
             let h = PrimeHash::new(seed);
             let (single, pair) = check(3, |c| h.hash(c));
-            assert!(single < 52.0 && pair < 375.0, "3D seed {seed}: {single} {pair}");
+            assert!(
+                single < 52.0 && pair < 375.0,
+                "3D seed {seed}: {single} {pair}"
+            );
             println!("3D seed {seed}: χ² {single:.1}, pairs {pair:.1}");
             let (single, pair) = check(2, |[x, y, _]| h.hash([x, y]));
             println!("2D seed {seed}: χ² {single:.1}, pairs {pair:.1}");
-            assert!(single < 52.0 && pair < 375.0, "2D seed {seed}: {single} {pair}");
+            assert!(
+                single < 52.0 && pair < 375.0,
+                "2D seed {seed}: {single} {pair}"
+            );
         }
         let h = PrimeHash::new(0);
         let (_, pair) = check(3, |[x, y, _]| h.hash([x, y]));

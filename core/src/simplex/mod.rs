@@ -29,10 +29,11 @@
 //! **Hash**: a corner `c` hashes to `(s ⊕ c₀·P₀ ⊕ c₁·P₁ ⊕ …) · M` in wrapping 32-bit
 //! integers, `s` a mix of the seed, `Pₐ` a prime per axis and `M` an odd multiplier
 //! (FastNoise Lite's primes and multiplier), and the gradient is chosen by the product's top
-//! bits, the best mixed. No table and no chain of dependent loads (a permutation chain such as
-//! [`Perlin`]'s `p[p[x] + y]` must be looked up lane by lane and repeats every 256 cells): a
-//! batch hashes 4 lanes per vector instruction, and the noise repeats only every 2³² cells.
-//! The top bits' statistics are tested (uniform, independent of the neighbours').
+//! bits, the best mixed. No table and no chain of dependent loads (a permutation chain such
+//! as [`Perlin`](crate::lattice::Perlin)'s `p[p[x] + y]` must be looked up lane by lane and
+//! repeats every 256 cells): a batch hashes 4 lanes per vector instruction, and the noise
+//! repeats only every 2³² cells. The top bits' statistics are tested (uniform, independent
+//! of the neighbours').
 //!
 //! **Gradients** are Perlin's sets: 1D slopes `±¼ … ±1` (3 bits), the 12 cube edges in 3D
 //! (Perlin's `grad`, as Gustavson's `grad3`; 4 bits), their projections onto the plane in 2D,
@@ -129,8 +130,8 @@ pub(crate) trait Gradients<R: Real, const D: usize> {
     fn dot(&self, h: u32, d: &[R; D]) -> R {
         let g = self.gradient(h);
         let mut sum = R::ZERO;
-        for a in 0..D {
-            sum = sum + Self::times(d[a], g[a]);
+        for (x, c) in d.iter().zip(g) {
+            sum = sum + Self::times(*x, c);
         }
         sum
     }
@@ -199,9 +200,9 @@ impl<R: Real, const D: usize> Gradients<R, D> for PerlinGradients {
                 let zero = b >> 3 & 3;
                 let mut sum = R::ZERO;
                 let mut bit = 0;
-                for a in 0..D {
+                for (a, x) in d.iter().enumerate() {
                     let skip = a as u32 == zero;
-                    let term = d[a].negate_if(b >> bit);
+                    let term = x.negate_if(b >> bit);
                     sum = sum + if skip { R::ZERO } else { term };
                     bit += u32::from(!skip);
                 }
