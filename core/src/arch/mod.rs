@@ -8,6 +8,7 @@
 //! |---|---|---|
 //! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture); wasm32 with `simd128` and without the `small` feature: one kernel ([`vector`]) over each target's 4-lane vector | `None`: the shared kernel of [`lattice`](crate::lattice) |
 //! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`), wasm32 as above (`f32x4.sqrt`), four lanes at a time | one lane at a time |
+//! | [`simplex_corners`]: simplex noise's corners over a batch's 16 `f32` lanes, 2D and 3D | x86-64 (SSE2: the hashes' 32-bit products by `pmuludq`, the gradients' signed offsets by masks) | `false`: the portable body, which the compiler vectorises |
 //! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
@@ -58,7 +59,36 @@ use portable as selected;
 pub(crate) use perlin_point::{
     PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
 };
-pub(crate) use selected::{OCTAVES_AS_LANES, sqrt_lanes};
+// * `SIMPLEX_CORNERS`: whether this target has `simplex_corners` (so callers skip the
+//   conversions where it has not).
+// * `simplex_corners(k, value)`: simplex noise's corners (`simplex::corners` with Perlin's
+//   gradients) over 16 `f32` lanes from their skewed cells and fractions, bit-identical to the
+//   portable body; `false` where the target has no kernel or not for this dimension.
+pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sqrt_lanes};
+
+/// What [`simplex_corners`] takes besides the output: the lanes' skewed cells and fractions,
+/// and the body's constants in `f32` (computed by the portable code).
+#[cfg_attr(
+    not(all(target_arch = "x86_64", target_feature = "sse2")),
+    allow(
+        dead_code,
+        reason = "only the x86-64 kernel reads the lanes; the others decline"
+    )
+)]
+pub(crate) struct SimplexLanes<'a, const D: usize> {
+    /// Each axis's skewed cell, lane by lane.
+    pub(crate) cell: &'a [[i32; crate::batch::LANES]; D],
+    /// Each axis's fraction in the skewed cell.
+    pub(crate) offset: &'a [[f32; crate::batch::LANES]; D],
+    /// The corner hash's start (the mixed seed).
+    pub(crate) start: u32,
+    /// The unskew `G`.
+    pub(crate) unskew: f32,
+    /// `j·G` for the corners `j = 0 … D`.
+    pub(crate) diagonal: [f32; 5],
+    /// The scale that makes the largest value 1.
+    pub(crate) scale: f32,
+}
 
 #[cfg(test)]
 mod tests {

@@ -54,3 +54,14 @@ pub(crate) fn sqrt_lanes(x: &mut [f32; crate::batch::LANES]) {
         *v = crate::Real::sqrt(*v);
     }
 }
+
+/// No simplex corner kernel: the portable body runs.
+pub(crate) const SIMPLEX_CORNERS: bool = false;
+
+#[inline]
+pub(crate) fn simplex_corners<const D: usize>(
+    _: &super::SimplexLanes<'_, D>,
+    _: &mut [f32; crate::batch::LANES],
+) -> bool {
+    false
+}

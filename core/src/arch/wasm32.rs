@@ -140,3 +140,15 @@ pub(crate) fn sqrt_lanes(x: &mut [f32; crate::batch::LANES]) {
         ]);
     }
 }
+
+/// No simplex corner kernel yet in WebAssembly: the portable body runs (compiled with
+/// `simd128`, it vectorises).
+pub(crate) const SIMPLEX_CORNERS: bool = false;
+
+#[inline]
+pub(crate) fn simplex_corners<const D: usize>(
+    _: &super::SimplexLanes<'_, D>,
+    _: &mut [f32; crate::batch::LANES],
+) -> bool {
+    false
+}

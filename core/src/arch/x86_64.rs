@@ -1,16 +1,20 @@
 //! The x86-64 kernels of [`arch`](super) (SSE2, which every x86-64 processor has): the 4-lane
-//! vector Perlin's point kernels ([`vector`](super::vector)) run on, and `sqrtps`. The
+//! vector Perlin's point kernels ([`vector`](super::vector)) run on, `sqrtps`, and simplex
+//! noise's corners over a batch's lanes. The
 //! intrinsics are the safe wrappers of `safe_arch`, so the crate keeps
 //! `#![forbid(unsafe_code)]`.
 
 use safe_arch::{
-    add_i32_m128i, add_m128, bitand_m128, bitor_m128, cast_to_m128_from_m128i,
-    cast_to_m128i_from_m128, cmp_eq_mask_i32_m128i, cmp_ge_mask_m128, cmp_gt_mask_m128,
-    convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
-    get_i32_from_m128i_s, load_unaligned_m128, m128, move_high_low_m128, move_low_high_m128,
-    move_mask_m128, mul_m128, set_splat_i32_m128i, set_splat_m128, shuffle_abi_f32_all_m128,
-    sqrt_m128, sub_m128, transpose_four_m128, truncate_m128_to_m128i, unpack_high_m128,
-    unpack_low_m128, zeroed_m128,
+    add_i32_m128i, add_m128, bitand_m128, bitand_m128i, bitandnot_m128, bitor_m128, bitor_m128i,
+    bitxor_m128, bitxor_m128i, cast_to_m128_from_m128i, cast_to_m128i_from_m128,
+    cmp_eq_mask_i32_m128i, cmp_ge_mask_m128, cmp_gt_mask_i32_m128i, cmp_gt_mask_m128,
+    cmp_lt_mask_i32_m128i, convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i,
+    get_f32_from_m128_s, get_i32_from_m128i_s, load_unaligned_m128, m128, m128i, max_m128,
+    move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128, mul_widen_u32_odd_m128i,
+    set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i,
+    shuffle_abi_f32_all_m128, shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128,
+    transpose_four_m128, truncate_m128_to_m128i, unpack_high_m128, unpack_low_i32_m128i,
+    unpack_low_m128, zeroed_m128, zeroed_m128i,
 };
 
 use super::vector::Lanes;
@@ -132,4 +136,130 @@ pub(crate) fn sqrt_lanes(x: &mut [f32; crate::batch::LANES]) {
         let root = bitand_m128(sqrt_m128(v), positive).to_array();
         quad.copy_from_slice(&root);
     }
+}
+
+/// `a · b` in each `u32` lane, wrapping (SSE2 multiplies two lanes to 64 bits at a time:
+/// `pmuludq` on the even lanes and on the odd ones shifted down, then the low halves
+/// interleaved).
+#[inline(always)]
+fn mul_u32(a: m128i, b: m128i) -> m128i {
+    let even = mul_widen_u32_odd_m128i(a, b);
+    let odd = mul_widen_u32_odd_m128i(shr_imm_u64_m128i::<32>(a), shr_imm_u64_m128i::<32>(b));
+    unpack_low_i32_m128i(
+        shuffle_ai_f32_all_m128i::<0b00_00_10_00>(even),
+        shuffle_ai_f32_all_m128i::<0b00_00_10_00>(odd),
+    )
+}
+
+/// `mask ? a : b` per lane (`mask` all ones or all zeros).
+#[inline(always)]
+fn select(mask: m128, a: m128, b: m128) -> m128 {
+    bitor_m128(bitand_m128(mask, a), bitandnot_m128(mask, b))
+}
+
+/// This target has [`simplex_corners`] (2D and 3D).
+pub(crate) const SIMPLEX_CORNERS: bool = true;
+
+/// Simplex noise's corners over 16 lanes in `f32` with Perlin's gradients, 2D and 3D
+/// (`simplex::corners`: the same operations on the same numbers, 4 lanes per vector, so the
+/// same bits; a test compares them): the ranks, the unskewed offsets, and per corner the
+/// offset, `τ`, the hash and the gradient's signed offsets by masks, `τ⁴ (g·d)`; then the
+/// scale. `false` (nothing written) in other dimensions.
+#[inline]
+pub(crate) fn simplex_corners<const D: usize>(
+    k: &super::SimplexLanes<'_, D>,
+    value: &mut [f32; crate::batch::LANES],
+) -> bool {
+    use crate::hash::prime::PrimeHash;
+    if D != 2 && D != 3 {
+        return false;
+    }
+    let zero = zeroed_m128();
+    let one = set_splat_m128(1.0);
+    let prime: [m128i; D] =
+        core::array::from_fn(|a| set_splat_i32_m128i(PrimeHash::PRIMES[a & 3] as i32));
+    let multiplier = set_splat_i32_m128i(PrimeHash::MULTIPLIER as i32);
+    for (group, out) in value.chunks_exact_mut(4).enumerate() {
+        let at = 4 * group;
+        let lanes = |x: &[f32; crate::batch::LANES]| {
+            load_unaligned_m128(&[x[at], x[at + 1], x[at + 2], x[at + 3]])
+        };
+        let offset: [m128; D] = core::array::from_fn(|a| lanes(&k.offset[a]));
+        // Gustavson's ranks: +1 for each axis whose fraction this one's exceeds.
+        let mut rank = [zeroed_m128i(); D];
+        for a in 0..D {
+            for b in a + 1..D {
+                let greater = cast_to_m128i_from_m128(cmp_gt_mask_m128(offset[a], offset[b]));
+                rank[a] = sub_i32_m128i(rank[a], greater);
+                rank[b] = add_i32_m128i(rank[b], add_i32_m128i(set_splat_i32_m128i(1), greater));
+            }
+        }
+        let mut sum = zero;
+        for o in &offset {
+            sum = add_m128(sum, *o);
+        }
+        let back = mul_m128(sum, set_splat_m128(k.unskew));
+        let first: [m128; D] = core::array::from_fn(|a| sub_m128(offset[a], back));
+        let term: [m128i; D] = core::array::from_fn(|a| {
+            let c = &k.cell[a];
+            mul_u32(
+                m128i::from([c[at], c[at + 1], c[at + 2], c[at + 3]]),
+                prime[a],
+            )
+        });
+        let mut total = zero;
+        for j in 0..=D {
+            let diagonal = set_splat_m128(k.diagonal[j]);
+            let mut q = zero;
+            let mut h = set_splat_i32_m128i(k.start as i32);
+            let mut d = [zero; D];
+            for a in 0..D {
+                // Axis a is stepped at corner j when rank + j ≥ D: never at the first corner,
+                // always at the last (`simplex::stepped`).
+                let step = if j == 0 {
+                    zeroed_m128i()
+                } else if j == D {
+                    set_splat_i32_m128i(-1)
+                } else {
+                    cmp_gt_mask_i32_m128i(
+                        add_i32_m128i(rank[a], set_splat_i32_m128i(j as i32)),
+                        set_splat_i32_m128i(D as i32 - 1),
+                    )
+                };
+                // x − 1 where stepped, else x − 0 = x exactly: the same bits as a select.
+                let x = add_m128(first[a], diagonal);
+                let x = sub_m128(x, bitand_m128(cast_to_m128_from_m128i(step), one));
+                d[a] = x;
+                q = add_m128(q, mul_m128(x, x));
+                h = bitxor_m128i(h, add_i32_m128i(term[a], bitand_m128i(step, prime[a])));
+            }
+            let t = sub_m128(sub_m128(one, q), q);
+            // maxps gives its second operand unless the first is greater: `t > 0 ? t : 0`.
+            let tau = max_m128(t, zero);
+            let b = shr_imm_u32_m128i::<28>(mul_u32(h, multiplier));
+            // Perlin's grad: ±u ± v, u = b < 8 ? x : y, v = b < 4 ? y : (b is 12 or 14 ? x : z).
+            let (x, y) = (d[0], d[1 % D]);
+            let z = if D == 3 { d[2 % D] } else { zero };
+            let below =
+                |n: i32| cast_to_m128_from_m128i(cmp_lt_mask_i32_m128i(b, set_splat_i32_m128i(n)));
+            let twelve_or_fourteen = cast_to_m128_from_m128i(cmp_eq_mask_i32_m128i(
+                bitor_m128i(b, set_splat_i32_m128i(2)),
+                set_splat_i32_m128i(14),
+            ));
+            let u = select(below(8), x, y);
+            let v = select(below(4), y, select(twelve_or_fourteen, x, z));
+            // The signs from bits 0 and 1, moved to the sign bit.
+            let sign_u = cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(b));
+            let sign_v =
+                cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(shr_imm_u32_m128i::<1>(b)));
+            let dot = add_m128(bitxor_m128(u, sign_u), bitxor_m128(v, sign_v));
+            let tau2 = mul_m128(tau, tau);
+            let tau4 = mul_m128(tau2, tau2);
+            total = add_m128(total, mul_m128(tau4, dot));
+        }
+        // The scale, then `+ 0` (`Real::canonical`: −0 to +0).
+        let v = add_m128(mul_m128(total, set_splat_m128(k.scale)), zero);
+        out.copy_from_slice(&v.to_array());
+    }
+    true
 }

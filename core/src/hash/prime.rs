@@ -23,7 +23,7 @@ impl PrimeHash {
     /// One prime per axis (FastNoise Lite's `PrimeX` … `PrimeW`).
     pub(crate) const PRIMES: [u32; 4] = [501_125_321, 1_136_930_381, 1_720_413_743, 1_066_037_191];
     /// The final multiplier (FastNoise Lite's `0x27d4eb2d`).
-    const MULTIPLIER: u32 = 0x27D4_EB2D;
+    pub(crate) const MULTIPLIER: u32 = 0x27D4_EB2D;
 
     /// The hash for `seed` (mixed, so that seeds 0, 1, 2, … are unrelated).
     pub(crate) const fn new(seed: u32) -> Self {
