@@ -1,8 +1,7 @@
 //! The x86-64 kernels of [`arch`](super) (SSE2, which every x86-64 processor has): the 4-lane
 //! vector Perlin's point kernels ([`vector`](super::vector)) run on, `sqrtps`, and simplex
-//! noise's corners over a batch's lanes. The
-//! intrinsics are the safe wrappers of `safe_arch`, so the crate keeps
-//! `#![forbid(unsafe_code)]`.
+//! noise's corners over a batch's lanes. The intrinsics are the safe wrappers of `safe_arch`,
+//! so the crate keeps `#![forbid(unsafe_code)]`.
 
 use safe_arch::{
     add_i32_m128i, add_m128, bitand_m128, bitand_m128i, bitandnot_m128, bitor_m128, bitor_m128i,

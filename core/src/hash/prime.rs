@@ -8,8 +8,8 @@
 //! chain (`p[p[x] + y]`), it needs no table and no dependent loads, so a batch computes it
 //! for 4 lanes per vector instruction, and it repeats only every 2³² cells.
 //!
-//! The gradient index's statistics (uniform choices, independent neighbours) are tested in
-//! `tests/tests/hash.rs`. Integer operations only: the same bits on every target.
+//! The gradient index's statistics (uniform choices, independent neighbours) are tested
+//! below. Integer operations only: the same bits on every target.
 
 use super::cell::mix;
 
@@ -112,11 +112,11 @@ mod tests {
         for seed in [0, 1, 2, 1234, u32::MAX] {
             let h = PrimeHash::new(seed);
             let (single, pair) = check(3, |c| h.hash(c));
+            println!("3D seed {seed}: χ² {single:.1}, pairs {pair:.1}");
             assert!(
                 single < 52.0 && pair < 375.0,
                 "3D seed {seed}: {single} {pair}"
             );
-            println!("3D seed {seed}: χ² {single:.1}, pairs {pair:.1}");
             let (single, pair) = check(2, |[x, y, _]| h.hash([x, y]));
             println!("2D seed {seed}: χ² {single:.1}, pairs {pair:.1}");
             assert!(

@@ -282,9 +282,10 @@ forward_to_perlin!(4, plain4);
 lattice_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(TabledPerlin, []);
 
-/// Perlin's reference `grad(hash, x, y, z)`, the definition [`GRAD3`] is checked against.
-#[cfg(test)]
-fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
+/// Perlin's reference `grad(hash, x, y, z)`, the definition [`GRAD3`] is checked against;
+/// its data-dependent choices vectorise as selects over lanes (simplex noise's batches).
+#[inline(always)]
+pub(crate) fn grad3<R: Real>(h: u32, x: R, y: R, z: R) -> R {
     let h = h & 15;
     let u = if h < 8 { x } else { y };
     let v = if h < 4 {
@@ -433,16 +434,7 @@ impl Lattice<4> for Perlin {
     /// instructions than the table's four products (`bench/README.md`).
     #[inline]
     fn dot<R: Real>(&self, h: u32, d: &[R; 4]) -> R {
-        let zero = (h >> 3 & 3) as usize;
-        let mut sum = R::ZERO;
-        let mut bit = 0;
-        for (a, x) in d.iter().enumerate() {
-            if a != zero {
-                sum = sum + signed(h, bit, *x);
-                bit += 1;
-            }
-        }
-        sum
+        grad4_dot(h, d)
     }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 4] {
@@ -452,29 +444,44 @@ impl Lattice<4> for Perlin {
     }
 }
 
-/// Perlin's gradient in `D` dimensions for the low bits of `h`, as [`Lattice::gradient`]
-/// (1D slopes, [`GRAD3`]'s rows, 2D their x and y, [`grad4`]'s rows): for noises that pick
-/// Perlin's gradients with another hash (simplex noise).
+/// Perlin's gradient in `D` dimensions for the low bits of `h` (1D slopes, [`GRAD3`]'s rows,
+/// 2D their x and y, [`grad4`]'s rows), as [`Lattice::gradient`] of [`Perlin`], for noises
+/// that pick Perlin's gradients with another hash (simplex noise). (Perlin's own impls keep
+/// their per-dimension bodies: through this function the Cortex-M0's 2D Perlin took 2 more
+/// instructions per sample.)
 #[inline(always)]
 pub(crate) fn gradient_of<R: Real, const D: usize>(h: u32) -> [R; D] {
-    let mut g = [R::ZERO; D];
+    // References, so the tables are promoted to statics; `min` keeps the (constant) index
+    // visibly in the row.
     match D {
-        1 => g[0] = signed(h, 2, R::from_ratio((h & 3) as i32 + 1, 2)),
+        1 => core::array::from_fn(|_| signed(h, 2, R::from_ratio((h & 3) as i32 + 1, 2))),
         2 | 3 => {
-            // References, so the tables are promoted to statics.
             let row: &[R; 3] = &Grad3::<R>::TABLE[(h & 15) as usize];
-            for (c, r) in g.iter_mut().zip(row) {
-                *c = *r;
-            }
+            core::array::from_fn(|a| row[a.min(2)])
         }
         _ => {
             let row: &[R; 4] = &Grad4::<R>::TABLE[(h & 31) as usize];
-            for (c, r) in g.iter_mut().zip(row) {
-                *c = *r;
-            }
+            core::array::from_fn(|a| row[a.min(3)])
         }
     }
-    g
+}
+
+/// `g·d` for [`grad4`]'s gradient of `h`: the signed sum of the three offsets it selects (for
+/// a point sample, fewer instructions than the table's four products, `bench/README.md`).
+/// The table's products give the same value but for the sign of a zero, which sampling
+/// canonicalises.
+#[inline(always)]
+pub(crate) fn grad4_dot<R: Real>(h: u32, d: &[R; 4]) -> R {
+    let zero = (h >> 3 & 3) as usize;
+    let mut sum = R::ZERO;
+    let mut bit = 0;
+    for (a, x) in d.iter().enumerate() {
+        if a != zero {
+            sum = sum + signed(h, bit, *x);
+            bit += 1;
+        }
+    }
+    sum
 }
 
 /// The 4D gradient of hash `h`: one of the 32 edges of the tesseract, its zero axis

@@ -5,11 +5,12 @@
 //! vanish. Perlin and Neyret instead turn every lattice gradient by the same angle over time:
 //! the gradients stay uncorrelated with each other at every angle, so the noise keeps its
 //! statistics while its features *swirl* in place, as in a flow. This needs gradients that
-//! can turn by any angle, so the top 8 bits `h` of each corner's hash pick a direction `h/256` of a turn (256
-//! evenly spaced unit vectors, as Gustavson and McEwan's psrdnoise picks an angle from its
-//! hash), and the animation adds `α`: `g = (cos 2π(h/256 + α), sin 2π(h/256 + α))`, computed
-//! as the direction `h/256` (a table of 256 cosines, built by `const fn`) turned by `α` (its
-//! cosine and sine taken once, when the angle is set): four products per corner.
+//! can turn by any angle, so the top 8 bits `h` of each corner's hash pick a direction
+//! `h/256` of a turn (256 evenly spaced unit vectors, as Gustavson and McEwan's psrdnoise
+//! picks an angle from its hash), and the animation adds `α`:
+//! `g = (cos 2π(h/256 + α), sin 2π(h/256 + α))`, computed as the direction `h/256` (a table
+//! of 256 cosines, built by `const fn`) turned by `α` (its cosine and sine taken once, when
+//! the angle is set): four products per corner.
 //!
 //! The lattice, hash, kernel and analytic gradient are [`Simplex`](super::Simplex)'s in 2D;
 //! with unit gradients of any direction the largest value is smaller than with Perlin's
