@@ -3,7 +3,10 @@
 //! cell borders), and the value of the nearest point's cell.
 //!
 //! **Feature points.** Every unit cell holds one feature point (as every peer does; Worley's
-//! own code drew Poisson counts of mean 2.5), placed by the cell's [`CellRng`]: its first draw
+//! own code drew Poisson counts of mean 2.5), placed by the cell's [`CellRng`], keyed by the
+//! cell's multiplicative hash `(s ⊕ x·P₀ ⊕ y·P₁ ⊕ …)·M` (simplex noise's, with FastNoise Lite's
+//! primes: one product per axis, so the cells around a point share their terms and are hashed
+//! as lanes; the generator's draw does the mixing). Its first draw
 //! gives each axis `32/D` bits (16 in 1D and 2D, 10 in 3D, 8 in 4D), a position `u` in
 //! `[0, 1)`, and the point sits at `½ + jitter·(u − ½)` across the cell, computed in 16.16
 //! integers, so the points are the same in every number type and on every target. `jitter = 1`
@@ -18,10 +21,11 @@
 //! `F` sought. Every cell whose box of possible feature points is already farther than that
 //! `F` is skipped before it is hashed (Worley's pruning, "doubles the speed"); the point's
 //! cell and its neighbours are visited nearest first (own cell, faces, edges, corners), so
-//! the `F` found early prunes the rest. On x86-64 in 3D, those 27 cells are hashed and placed
-//! whole instead and offered in the same order: the same `F1` and `F2` bit for bit, faster
-//! where a mispredicted prune costs more than the hashes it saves (`bench/README.md`,
-//! "cellular noise's near cells whole"). A 3³
+//! the `F` found early prunes the rest. On x86-64 in 2D and 3D, those 3ᴰ cells are hashed and
+//! placed whole instead and offered in the same order (in `f32` by an SSE2 kernel, 4 cells per
+//! vector, `arch::cellular_near`): the same `F1` and `F2` bit for bit,
+//! faster where a mispredicted prune costs more than the hashes it saves (`bench/README.md`,
+//! "cellular noise's near cells whole" and "cellular noise's multiplicative cell hash"). A 3³
 //! search, as most peers do, can miss `F2` (and, with the peers' looser placements, `F1`):
 //! with `jitter = 1` the second-nearest point can lie two cells away. How far the search can
 //! go is bounded: `F2` is never beyond the own cell's point and the near face neighbour's
@@ -67,8 +71,9 @@
 //! # Ok::<(), bandnoise::Error>(())
 //! ```
 
-use crate::hash::chain::ChainHash;
-use crate::hash::{CellHash, CellRng};
+use crate::arch::{self, CellularCells, NearLanes, NearPair};
+use crate::hash::CellRng;
+use crate::hash::prime::PrimeHash;
 use crate::lattice::kernel::split_point;
 use crate::{Error, Real};
 
@@ -238,10 +243,10 @@ impl Output {
 /// `1` in the 16.16 units of feature point positions.
 const UNIT: i32 = 1 << 16;
 
-/// Whether the search prunes rings 0 and 1 cell by cell in 3D ([`Cellular::search`]): on
-/// every target but x86-64, whose out-of-order cores search the whole 3³ faster than the
-/// pruned walk with its unpredictable branches (in 2D the pruned walk was faster; measured
-/// in `bench/README.md`). On the in-order firmware cores pruning saves hashes; the demo's
+/// Whether the search prunes rings 0 and 1 cell by cell in 2D and 3D ([`Cellular::search`]):
+/// on every target but x86-64, whose out-of-order cores search the whole 3ᴰ faster than the
+/// pruned walk with its unpredictable branches (measured in `bench/README.md`). On the
+/// in-order firmware cores pruning saves hashes; the demo's
 /// module has no room for the whole search's code; other hosts are not measured. Where it
 /// is true the pruned walk also keeps `F1` with `offer`, not [`Nearest::offer_first`].
 const PRUNE_NEAR: bool = !cfg!(target_arch = "x86_64");
@@ -261,7 +266,7 @@ static NEAR_4: [[i8; 4]; 81] = near_order(4);
 
 /// For `D` = 1 to 3 (entry `D − 1`), each cell of the near table (`NEAR_1`, …) as the index
 /// [`Cellular::near_whole`] gives it: offset `k` is cell `Σ (kₐ + 1)·3^(D−1−a)` (axis 0 the
-/// most significant digit, as the hash chains fork).
+/// most significant digit, as the hash terms fork).
 static NEAR_INDEX: [[u8; 27]; 3] = [
     near_index(&NEAR_1),
     near_index(&NEAR_2),
@@ -312,6 +317,28 @@ const fn near_index(near: &[[i8; 4]]) -> [u8; 27] {
         n += 1;
     }
     out
+}
+
+/// The near cells of 2D and 3D as the lanes of [`arch::cellular_near`], in near order.
+static NEAR_LANES: [NearLanes; 2] = [near_lanes(&NEAR_2, 2), near_lanes(&NEAR_3, 3)];
+
+const fn near_lanes(near: &[[i8; 4]], dims: usize) -> NearLanes {
+    let mut lanes = NearLanes {
+        unit: [[0; 28]; 3],
+        prime: [[0; 28]; 3],
+    };
+    let mut n = 0;
+    while n < near.len() {
+        let mut a = 0;
+        while a < dims {
+            let k = near[n][a] as i32;
+            lanes.unit[a][n] = k * UNIT;
+            lanes.prime[a][n] = (k as u32).wrapping_mul(PrimeHash::PRIMES[a]) as i32;
+            a += 1;
+        }
+        n += 1;
+    }
+    lanes
 }
 
 /// The near table of `D` dimensions (1 to 4).
@@ -376,7 +403,7 @@ const fn near_order<const N: usize>(dims: usize) -> [[i8; 4]; N] {
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Cellular {
-    hash: CellHash,
+    hash: PrimeHash,
     metric: Metric,
     output: Output,
     /// The jitter in 16.16 units, `0..=UNIT`.
@@ -396,7 +423,7 @@ impl Cellular {
     #[must_use]
     pub const fn new(seed: u32) -> Self {
         Self {
-            hash: CellHash::new(seed),
+            hash: PrimeHash::new(seed),
             metric: Metric::Euclidean,
             output: Output::F1,
             jitter: UNIT,
@@ -547,7 +574,7 @@ impl Cellular {
     /// x86-64 (in 2D) but cost the demo's wasm module 7 KB, past its budget.
     #[inline(never)]
     fn search<R: Real, const D: usize>(&self, p: [R; D]) -> Nearest<R, D> {
-        self.search_in(p, D == 3 && !PRUNE_NEAR)
+        self.search_in(p, (D == 2 || D == 3) && !PRUNE_NEAR)
     }
 
     /// [`search`](Self::search), with rings 0 and 1 searched whole
@@ -600,9 +627,9 @@ impl Cellular {
             if box_key < reach(best) {
                 let mut h = start;
                 for a in 0..D {
-                    h = self.hash.step(h, cell[a].wrapping_add(k[a]) as u32);
+                    h ^= PrimeHash::axis(a, cell[a].wrapping_add(k[a]));
                 }
-                offer(k, h, best);
+                offer(k, PrimeHash::finish(h), best);
             }
         };
 
@@ -658,8 +685,8 @@ impl Cellular {
 
 impl Cellular {
     /// Rings 0 and 1 of [`search`](Self::search) whole, for up to 3 dimensions: every one of
-    /// the 3ᴰ cells around the point's (`cell`; the point at `frac` in it) hashed (the chains
-    /// sharing their prefixes), its point placed and its key taken, then the cells offered to
+    /// the 3ᴰ cells around the point's (`cell`; the point at `frac` in it) hashed (each
+    /// axis's three terms shared), its point placed and its key taken, then the cells offered to
     /// `best` nearest box first, in `NEAR_1`'s order.
     ///
     /// The same `best` as the pruned walk, bit for bit: a cell it prunes has a box whose key
@@ -673,29 +700,93 @@ impl Cellular {
         frac: [R; D],
         best: &mut Nearest<R, D>,
     ) {
+        if self.near_kernel(cell, frac, best) {
+            return;
+        }
+        // Arrays of exactly 3ᴰ cells, so no lane is computed for nothing (4D takes the pruned
+        // walk).
+        match D {
+            1 => self.near_cells::<R, D, 3>(cell, frac, best),
+            2 => self.near_cells::<R, D, 9>(cell, frac, best),
+            _ => self.near_cells::<R, D, 27>(cell, frac, best),
+        }
+    }
+
+    /// [`near_whole`](Self::near_whole) through the target's kernel
+    /// ([`arch::cellular_near`], `f32` in 2D and 3D on x86-64): the same bits. `false`
+    /// (nothing written) where there is none, or for a fraction that is not finite.
+    #[inline(always)]
+    fn near_kernel<R: Real, const D: usize>(
+        &self,
+        cell: [i32; D],
+        frac: [R; D],
+        best: &mut Nearest<R, D>,
+    ) -> bool {
+        if !arch::CELLULAR_NEAR || !R::BINARY32 || !(D == 2 || D == 3) {
+            return false;
+        }
+        let frac = frac.map(R::to_f32);
+        if !frac.iter().all(|f| f.is_finite()) {
+            return false;
+        }
+        let k = CellularCells {
+            cell,
+            frac,
+            start: self.hash.start(),
+            jitter: self.jitter,
+            squares: matches!(self.metric, Metric::Euclidean | Metric::EuclideanSquared),
+            chebyshev: self.metric == Metric::Chebyshev,
+            second: self.output.needs_f2(),
+            lanes: &NEAR_LANES[D.saturating_sub(2).min(1)],
+        };
+        let mut out = NearPair {
+            key: [0.0; 2],
+            q: [[0.0; 3]; 2],
+            hash: 0,
+        };
+        if !arch::cellular_near(&k, &mut out) {
+            return false;
+        }
+        let n = if self.output.needs_f2() { 2 } else { 1 };
+        for i in 0..n {
+            best.keys[i] = R::from_f32(out.key[i]);
+            best.offsets[i] = core::array::from_fn(|a| R::from_f32(out.q[i][a.min(2)]));
+        }
+        best.hash = out.hash;
+        true
+    }
+
+    /// [`near_whole`](Self::near_whole) over its `C = 3ᴰ` cells.
+    #[inline(always)]
+    fn near_cells<R: Real, const D: usize, const C: usize>(
+        &self,
+        cell: [i32; D],
+        frac: [R; D],
+        best: &mut Nearest<R, D>,
+    ) {
         let metric = self.metric;
         // Cell i of the 3ᴰ is offset k_a = digit a of i in base 3, minus 1, axis 0 the most
-        // significant digit, so the hash chains (axis 0 folded first) fork digit by digit.
-        // (4D takes the pruned walk; `min` keeps its unused instance within the arrays.)
+        // significant digit, so the hash's terms fork digit by digit. (`min` keeps the
+        // unused instances, of other dimensions, within the arrays.)
         let axis = |a: usize| cell[a.min(D - 1)];
-        let first: [u32; 3] = fork(&self.hash, &[self.hash.start()], axis(0));
-        let hashes: [u32; 27] = match D {
+        let first: [u32; 3] = fork(&[self.hash.start()], 0, axis(0));
+        let folded: [u32; C] = match D {
             1 => pad(&first),
-            2 => pad(&fork::<3, 9>(&self.hash, &first, axis(1))),
-            _ => fork(
-                &self.hash,
-                &fork::<3, 9>(&self.hash, &first, axis(1)),
+            2 => pad(&fork::<3, 9>(&first, 1, axis(1))),
+            _ => pad(&fork::<9, 27>(
+                &fork::<3, 9>(&first, 1, axis(1)),
+                2,
                 axis(2),
-            ),
+            )),
         };
-        let count = 3usize.pow(D.min(3) as u32);
+        let hashes = folded.map(PrimeHash::finish);
         let digits = &DIGITS[(D - 1).min(2)];
-        let mut keys = [R::ZERO; 27];
-        let mut points = [[R::ZERO; 27]; D];
-        let bits: [u32; 27] = core::array::from_fn(|i| CellRng::from_key(hashes[i]).next_u32());
+        let mut keys = [R::ZERO; C];
+        let mut points = [[R::ZERO; C]; D];
+        let bits: [u32; C] = hashes.map(|h| CellRng::from_key(h).next_u32());
         for a in 0..D {
-            for i in 0..count {
-                let k = i32::from(digits[a.min(2)][i]);
+            for i in 0..C {
+                let k = i32::from(digits[a.min(2)][i.min(26)]);
                 let q = R::from_ratio(k * UNIT + self.axis_offset::<D>(bits[i], a), 16) - frac[a];
                 points[a][i] = q;
                 keys[i] = metric.combine(keys[i], metric.axis_key(q.abs()));
@@ -703,30 +794,28 @@ impl Cellular {
         }
         // `Nearest::offer` over the cells in near order, on indices.
         let (mut key, mut index) = (best.keys, [0usize; 2]);
-        for &i in NEAR_INDEX[(D - 1).min(2)].iter().take(count) {
-            let i = usize::from(i).min(26);
+        for &i in NEAR_INDEX[(D - 1).min(2)].iter().take(C) {
+            let i = usize::from(i).min(C - 1);
             keep_nearest(&mut key, &mut index, keys[i], i);
         }
         best.keys = key;
-        best.offsets = index.map(|i| core::array::from_fn(|a| points[a][i.min(26)]));
-        best.hash = hashes[index[0].min(26)];
+        best.offsets = index.map(|i| core::array::from_fn(|a| points[a][i.min(C - 1)]));
+        best.hash = hashes[index[0].min(C - 1)];
     }
 }
 
-/// The hash chains of `parents` each continued by the coordinates `c − 1`, `c`, `c + 1` of
-/// the next axis: chain `i` of the result continues parent `i / 3` by `c + i % 3 − 1`
-/// (`M = 3N`; constant sizes, so the loop unrolls).
+/// The folded hash terms ([`PrimeHash`]) of `parents` each continued by axis `a`'s
+/// coordinates `c − 1`, `c`, `c + 1`: entry `i` of the result continues parent `i / 3` by
+/// `c + i % 3 − 1` (`M = 3N`; constant sizes, so the loop unrolls).
 #[inline(always)]
-fn fork<const N: usize, const M: usize>(hash: &CellHash, parents: &[u32; N], c: i32) -> [u32; M] {
-    core::array::from_fn(|i| {
-        let k = (i % 3) as i32 - 1;
-        hash.step(parents[(i / 3).min(N - 1)], c.wrapping_add(k) as u32)
-    })
+fn fork<const N: usize, const M: usize>(parents: &[u32; N], a: usize, c: i32) -> [u32; M] {
+    let terms = [-1, 0, 1].map(|k| PrimeHash::axis(a, c.wrapping_add(k)));
+    core::array::from_fn(|i| parents[(i / 3).min(N - 1)] ^ terms[i % 3])
 }
 
-/// `hashes` in the first slots of 27.
+/// `hashes` in the first slots of `M` (`M = N` where it is used).
 #[inline(always)]
-fn pad<const N: usize>(hashes: &[u32; N]) -> [u32; 27] {
+fn pad<const N: usize, const M: usize>(hashes: &[u32; N]) -> [u32; M] {
     core::array::from_fn(|i| hashes[i.min(N - 1)])
 }
 
@@ -894,6 +983,71 @@ mod tests {
                     }
                 }
             }
+        }
+    }
+
+    /// The feature points are uniform in their cells and independent of their neighbours',
+    /// as are the cell values, whose generator the multiplicative cell hash keys: χ² of each
+    /// cell's point binned 4 × 4 (over its first two axes; 15 degrees of freedom) and of the
+    /// pairs with the neighbour along each axis and the diagonal (255), and of the cell
+    /// values' top 4 bits and their pairs, below their 10⁻⁶ quantiles (52 and 375), in 2D and
+    /// 3D for several seeds.
+    #[test]
+    fn points_and_values_are_uniform_and_independent() {
+        extern crate std;
+        fn chi2(counts: &[u32]) -> f64 {
+            let total: u32 = counts.iter().sum();
+            let e = f64::from(total) / counts.len() as f64;
+            counts.iter().map(|&c| (f64::from(c) - e).powi(2) / e).sum()
+        }
+        fn check<const D: usize>(noise: &Cellular) {
+            // The point's bin (4 × 4 over axes 0 and 1) and the value's top 4 bits.
+            let bins = |c: [i32; D]| {
+                let p = noise.feature_point(c);
+                let bin = |a: usize| ((p[a] - f64::from(c[a])) * 4.0) as usize;
+                let v: f64 = noise.cell_value(c);
+                (bin(0) * 4 + bin(1), ((v + 1.0) * 8.0) as usize)
+            };
+            let (n, depth) = if D == 3 { (40, 40) } else { (250, 1) };
+            let steps: [[i32; 3]; 4] = [[1, 0, 0], [0, 1, 0], [1, 1, 0], [0, 0, 1]];
+            let mut single = [[0u32; 16]; 2];
+            let mut worst: [f64; 2] = [0.0; 2];
+            for (k, step) in steps.iter().enumerate().take(if D == 3 { 4 } else { 3 }) {
+                let mut pairs = [[0u32; 256]; 2];
+                for x in 0..n {
+                    for y in 0..n {
+                        for z in 0..depth {
+                            let at = [x * 7 - 300, y * 5 + 11, z * 3 - 50];
+                            let c: [i32; D] = core::array::from_fn(|a| at[a]);
+                            let next: [i32; D] = core::array::from_fn(|a| at[a] + step[a]);
+                            let (b, nb) = (bins(c), bins(next));
+                            if k == 0 {
+                                single[0][b.0] += 1;
+                                single[1][b.1] += 1;
+                            }
+                            pairs[0][b.0 * 16 + nb.0] += 1;
+                            pairs[1][b.1 * 16 + nb.1] += 1;
+                        }
+                    }
+                }
+                for i in 0..2 {
+                    worst[i] = worst[i].max(chi2(&pairs[i]));
+                }
+            }
+            for i in 0..2 {
+                let what = ["points", "values"][i];
+                let one = chi2(&single[i]);
+                std::println!("{D}D {what}: χ² {one:.1}, pairs {:.1}", worst[i]);
+                assert!(
+                    one < 52.0 && worst[i] < 375.0,
+                    "{D}D {what}: {one} {}",
+                    worst[i]
+                );
+            }
+        }
+        for seed in [0, 1, 2, 1234, u32::MAX] {
+            check::<2>(&Cellular::new(seed));
+            check::<3>(&Cellular::new(seed));
         }
     }
 

@@ -9,6 +9,7 @@
 //! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture); wasm32 with `simd128` and without the `small` feature: one kernel ([`vector`]) over each target's 4-lane vector | `None`: the shared kernel of [`lattice`](crate::lattice) |
 //! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`), wasm32 as above (`f32x4.sqrt`), four lanes at a time | one lane at a time |
 //! | [`simplex_corners`]: simplex noise's corners over a batch's 16 `f32` lanes, 2D and 3D | x86-64 (SSE2: the hashes' 32-bit products by `pmuludq`, the gradients' signed offsets by masks) | `false`: the portable body, which the compiler vectorises |
+//! | [`cellular_near`]: cellular noise's 3ᴰ near cells in `f32`, 2D and 3D, as lanes in near order | x86-64 (SSE2: hashes and draws by `pmuludq`, the least key by `minps` and `movmskps`) | `false`: the portable body |
 //! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
@@ -65,6 +66,60 @@ pub(crate) use perlin_point::{
 //   gradients) over 16 `f32` lanes from their skewed cells and fractions, bit-identical to the
 //   portable body; `false` where the target has no kernel or not for this dimension.
 pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sqrt_lanes};
+// * `CELLULAR_NEAR`: whether this target has `cellular_near`.
+// * `cellular_near(k, out)`: cellular noise's 3ᴰ near cells (`Cellular::near_whole`) in
+//   `f32`, 2D and 3D, in near order as lanes, and the nearest and second-nearest of them,
+//   bit-identical to the portable body; `false` where the target has no kernel.
+pub(crate) use selected::{CELLULAR_NEAR, cellular_near};
+
+/// The lanes of [`cellular_near`]: the 3ᴰ cells around a point's in near order (the
+/// cellular module's), padded to 28 (`unit`: each axis's offset times 1 in 16.16; `prime`:
+/// times the axis's hash prime, wrapping).
+pub(crate) struct NearLanes {
+    /// `kₐ·2¹⁶` for each axis and lane.
+    pub(crate) unit: [[i32; 28]; 3],
+    /// `kₐ·Pₐ` (wrapping) for each axis and lane.
+    pub(crate) prime: [[i32; 28]; 3],
+}
+
+/// What [`cellular_near`] takes: the point's cell and fraction, the hash's start, the jitter
+/// (16.16), the metric, and the lanes' offsets.
+#[cfg_attr(
+    not(all(target_arch = "x86_64", target_feature = "sse2")),
+    allow(
+        dead_code,
+        reason = "only the x86-64 kernel reads it; the others decline"
+    )
+)]
+pub(crate) struct CellularCells<'a, const D: usize> {
+    /// The point's cell.
+    pub(crate) cell: [i32; D],
+    /// The point's fraction in it (finite).
+    pub(crate) frac: [f32; D],
+    /// The cell hash's start (the mixed seed).
+    pub(crate) start: u32,
+    /// The jitter in 16.16 units.
+    pub(crate) jitter: i32,
+    /// Whether each axis's key is its square (the Euclidean metrics) rather than its magnitude.
+    pub(crate) squares: bool,
+    /// Whether the axes' keys combine by maximum (Chebyshev) rather than by sum.
+    pub(crate) chebyshev: bool,
+    /// Whether the second-nearest is sought too.
+    pub(crate) second: bool,
+    /// The cells' offsets as lanes.
+    pub(crate) lanes: &'a NearLanes,
+}
+
+/// What [`cellular_near`] gives: the nearest cell's (and, where asked, the second
+/// nearest's) key and point's offsets from the sample, and the nearest cell's hash.
+pub(crate) struct NearPair {
+    /// The keys, nearest first.
+    pub(crate) key: [f32; 2],
+    /// The offsets (the first `D` axes), nearest first.
+    pub(crate) q: [[f32; 3]; 2],
+    /// The nearest cell's hash.
+    pub(crate) hash: u32,
+}
 
 /// What [`simplex_corners`] takes besides the output: the lanes' skewed cells and fractions,
 /// and the body's constants in `f32` (computed by the portable code).

@@ -152,3 +152,14 @@ pub(crate) fn simplex_corners<const D: usize>(
 ) -> bool {
     false
 }
+
+/// No cellular near-cell kernel: the portable body runs.
+pub(crate) const CELLULAR_NEAR: bool = false;
+
+#[inline]
+pub(crate) fn cellular_near<const D: usize>(
+    _: &super::CellularCells<'_, D>,
+    _: &mut super::NearPair,
+) -> bool {
+    false
+}

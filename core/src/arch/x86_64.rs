@@ -6,14 +6,15 @@
 use safe_arch::{
     add_i32_m128i, add_m128, bitand_m128, bitand_m128i, bitandnot_m128, bitor_m128, bitor_m128i,
     bitxor_m128, bitxor_m128i, cast_to_m128_from_m128i, cast_to_m128i_from_m128,
-    cmp_eq_mask_i32_m128i, cmp_ge_mask_m128, cmp_gt_mask_i32_m128i, cmp_gt_mask_m128,
-    cmp_lt_mask_i32_m128i, convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i,
-    get_f32_from_m128_s, get_i32_from_m128i_s, load_unaligned_m128, m128, m128i, max_m128,
-    move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128, mul_widen_u32_odd_m128i,
-    set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i,
-    shuffle_abi_f32_all_m128, shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128,
-    transpose_four_m128, truncate_m128_to_m128i, unpack_high_m128, unpack_low_i32_m128i,
-    unpack_low_m128, zeroed_m128, zeroed_m128i,
+    cmp_eq_mask_i32_m128i, cmp_eq_mask_m128, cmp_ge_mask_m128, cmp_gt_mask_i32_m128i,
+    cmp_gt_mask_m128, cmp_lt_mask_i32_m128i, convert_to_m128_from_i32_m128i,
+    extract_i16_as_i32_m128i, get_f32_from_m128_s, get_i32_from_m128i_s, load_unaligned_m128, m128,
+    m128i, max_m128, min_m128, move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128,
+    mul_widen_u32_odd_m128i, set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i,
+    shr_imm_i32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i, shuffle_abi_f32_all_m128,
+    shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128, transpose_four_m128,
+    truncate_m128_to_m128i, unpack_high_m128, unpack_low_i32_m128i, unpack_low_m128, zeroed_m128,
+    zeroed_m128i,
 };
 
 use super::vector::Lanes;
@@ -261,4 +262,159 @@ pub(crate) fn simplex_corners<const D: usize>(
         out.copy_from_slice(&v.to_array());
     }
     true
+}
+
+/// This target has [`cellular_near`] (2D and 3D).
+pub(crate) const CELLULAR_NEAR: bool = true;
+
+/// Cellular noise's 3ᴰ near cells in `f32`, 2D and 3D (`Cellular::near_whole`: the same
+/// operations on the same numbers, 4 cells per vector, so the same bits; a test compares
+/// them): each cell's hash and its generator's first draw by `pmuludq` products, the point's
+/// offsets from it, the offsets from the sample and the cell's key; then the first cell of
+/// least key and, where asked, the first of least key among the others (what
+/// `keep_nearest` over the cells in near order keeps). `false` (nothing written) in other
+/// dimensions.
+#[inline]
+pub(crate) fn cellular_near<const D: usize>(
+    k: &super::CellularCells<'_, D>,
+    out: &mut super::NearPair,
+) -> bool {
+    match D {
+        2 => near_cells::<D, 3>(k, out),
+        3 => near_cells::<D, 7>(k, out),
+        _ => return false,
+    }
+    true
+}
+
+/// [`cellular_near`] over `G` vectors of 4 cells (the 3ᴰ and padding).
+#[inline(always)]
+fn near_cells<const D: usize, const G: usize>(
+    k: &super::CellularCells<'_, D>,
+    out: &mut super::NearPair,
+) {
+    use crate::hash::prime::PrimeHash;
+    use crate::hash::{cell::MIX, rng::WEYL};
+    const UNIT: i32 = 1 << 16;
+    let count = 3i32.pow(D as u32);
+    let width: u32 = if D == 2 { 16 } else { 10 };
+    let splat = set_splat_i32_m128i;
+    let multiplier = splat(PrimeHash::MULTIPLIER as i32);
+    let mix = MIX.map(|m| splat(m as i32));
+    let weyl = splat(WEYL as i32);
+    let start = splat(k.start as i32);
+    let term: [m128i; D] = core::array::from_fn(|a| splat(PrimeHash::axis(a, k.cell[a]) as i32));
+    let frac: [m128; D] = core::array::from_fn(|a| set_splat_m128(k.frac[a]));
+    let scale = set_splat_m128(1.0 / UNIT as f32);
+    let half = splat(UNIT / 2);
+    let jitter = splat(k.jitter);
+    let sign = set_splat_m128(-0.0);
+    let infinity = set_splat_m128(f32::INFINITY);
+    let mut keys = [zeroed_m128(); G];
+    let mut hashes = [zeroed_m128i(); G];
+    let mut offsets = [[zeroed_m128(); G]; D];
+    for g in 0..G {
+        let at = 4 * g;
+        let lanes = |x: &[i32; 28]| m128i::from([x[at], x[at + 1], x[at + 2], x[at + 3]]);
+        // The cell's hash: the start, each axis's term `(c + kₐ)·Pₐ = c·Pₐ + kₐ·Pₐ`, the
+        // product with the multiplier.
+        let mut h = start;
+        for (term, prime) in term.iter().zip(&k.lanes.prime) {
+            h = bitxor_m128i(h, add_i32_m128i(*term, lanes(prime)));
+        }
+        let h = mul_u32(h, multiplier);
+        hashes[g] = h;
+        // The generator's first draw: the mixer of the key plus the Weyl step.
+        let x = add_i32_m128i(h, weyl);
+        let x = bitxor_m128i(x, shr_imm_u32_m128i::<16>(x));
+        let x = mul_u32(x, mix[0]);
+        let x = bitxor_m128i(x, shr_imm_u32_m128i::<15>(x));
+        let x = mul_u32(x, mix[1]);
+        let bits = bitxor_m128i(x, shr_imm_u32_m128i::<16>(x));
+        let mut key = zeroed_m128();
+        for a in 0..D {
+            // Axis a's `width` bits as a 16.16 position, the jitter's offset, the cell's.
+            let shifted = match (D, a) {
+                (2, 0) => shr_imm_u32_m128i::<16>(bits),
+                (2, _) => bits,
+                (_, 0) => shr_imm_u32_m128i::<22>(bits),
+                (_, 1) => shr_imm_u32_m128i::<12>(bits),
+                _ => shr_imm_u32_m128i::<2>(bits),
+            };
+            let mut u = bitand_m128i(shifted, splat((1 << width) - 1));
+            if width == 10 {
+                u = shl_imm_u32_m128i::<6>(u);
+            }
+            if k.jitter != UNIT {
+                // ½ + ((u − ½)·jitter >> 16): the product fits in i32 (`Cellular::offset`).
+                let product = mul_u32(sub_i32_m128i(u, half), jitter);
+                u = add_i32_m128i(half, shr_imm_i32_m128i::<16>(product));
+            }
+            let n = add_i32_m128i(u, lanes(&k.lanes.unit[a]));
+            let q = sub_m128(mul_m128(convert_to_m128_from_i32_m128i(n), scale), frac[a]);
+            offsets[a][g] = q;
+            let axis_key = if k.squares {
+                mul_m128(q, q)
+            } else {
+                bitandnot_m128(sign, q)
+            };
+            key = if a == 0 {
+                axis_key
+            } else if k.chebyshev {
+                // `combine`: `b > a ? b : a`, which is `maxps(b, a)`.
+                max_m128(axis_key, key)
+            } else {
+                add_m128(key, axis_key)
+            };
+        }
+        // Lanes past the 3ᴰ cells never win.
+        let valid = cmp_gt_mask_i32_m128i(
+            splat(count),
+            m128i::from([at as i32, at as i32 + 1, at as i32 + 2, at as i32 + 3]),
+        );
+        keys[g] = select(cast_to_m128_from_m128i(valid), key, infinity);
+    }
+    let lane = |v: &[m128; G], i: usize| v[(i / 4).min(G - 1)].to_array()[i % 4];
+    let first = first_least(&keys);
+    out.hash = <[i32; 4]>::from(hashes[(first / 4).min(G - 1)])[first % 4] as u32;
+    out.key[0] = lane(&keys, first);
+    out.q[0] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], first));
+    if k.second {
+        // The others: the first lane out of the running.
+        for (g, key) in keys.iter_mut().enumerate() {
+            let at = 4 * g as i32;
+            let is_first = cmp_eq_mask_i32_m128i(
+                splat(first as i32),
+                m128i::from([at, at + 1, at + 2, at + 3]),
+            );
+            *key = select(cast_to_m128_from_m128i(is_first), infinity, *key);
+        }
+        let second = first_least(&keys);
+        out.key[1] = lane(&keys, second);
+        out.q[1] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], second));
+    }
+}
+
+/// The first lane of `keys` (`G` vectors of 4 finite or infinite keys, not all infinite) whose
+/// key is the least: `minps` over the vectors and across the lanes, then `movmskps` of the
+/// lanes equal to it.
+#[inline(always)]
+fn first_least<const G: usize>(keys: &[m128; G]) -> usize {
+    let mut least = keys[0];
+    for key in &keys[1..] {
+        least = min_m128(least, *key);
+    }
+    least = min_m128(
+        least,
+        shuffle_abi_f32_all_m128::<0b10_11_00_01>(least, least),
+    );
+    least = min_m128(
+        least,
+        shuffle_abi_f32_all_m128::<0b01_00_11_10>(least, least),
+    );
+    let mut found = 0u32;
+    for (g, key) in keys.iter().enumerate() {
+        found |= (move_mask_m128(cmp_eq_mask_m128(*key, least)) as u32) << (4 * g);
+    }
+    found.trailing_zeros() as usize
 }

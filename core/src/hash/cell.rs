@@ -10,15 +10,18 @@
 use super::chain::{self, ChainHash, Order};
 use crate::Real;
 
+/// The multipliers of [`mix`] (vector kernels compute it too).
+pub(crate) const MIX: [u32; 2] = [0x7FEB_352D, 0x846C_A68B];
+
 /// Wellons' `lowbias32`: a bijection of `u32` in which each input bit flips each output bit
 /// with probability close to ½.
 #[inline]
 #[must_use]
 pub(crate) const fn mix(mut x: u32) -> u32 {
     x ^= x >> 16;
-    x = x.wrapping_mul(0x7FEB_352D);
+    x = x.wrapping_mul(MIX[0]);
     x ^= x >> 15;
-    x = x.wrapping_mul(0x846C_A68B);
+    x = x.wrapping_mul(MIX[1]);
     x ^= x >> 16;
     x
 }

@@ -13,11 +13,11 @@
 //! periodic wraps) are one crate-internal seam, `chain.rs`, that every lattice noise uses.
 
 mod bbs;
-mod cell;
+pub(crate) mod cell;
 pub(crate) mod chain;
 mod perm;
 pub(crate) mod prime;
-mod rng;
+pub(crate) mod rng;
 pub(crate) mod seed;
 
 pub use bbs::Bbs;

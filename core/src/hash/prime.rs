@@ -9,7 +9,9 @@
 //! for 4 lanes per vector instruction, and it repeats only every 2³² cells.
 //!
 //! The gradient index's statistics (uniform choices, independent neighbours) are tested
-//! below. Integer operations only: the same bits on every target.
+//! below. Cellular noise keys its cells' [`CellRng`](super::CellRng) by this hash (the
+//! generator's draw mixes every bit of it; `tests/tests/cellular.rs` measures the points'
+//! statistics). Integer operations only: the same bits on every target.
 
 use super::cell::mix;
 
@@ -51,8 +53,8 @@ impl PrimeHash {
         folded.wrapping_mul(Self::MULTIPLIER)
     }
 
-    /// The hash of `cell` (the body computes the same from the axes' terms).
-    #[cfg(test)]
+    /// The hash of `cell` (the bodies compute the same from the axes' terms).
+    #[inline]
     pub(crate) fn hash<const D: usize>(&self, cell: [i32; D]) -> u32 {
         let mut h = self.start();
         for (a, c) in cell.into_iter().enumerate() {

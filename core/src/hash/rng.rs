@@ -11,7 +11,7 @@ use super::cell::{CellHash, mix};
 use crate::{Error, Real};
 
 /// The golden-ratio increment of the Weyl sequence (odd, so the counter visits every `u32`).
-const WEYL: u32 = 0x9E37_79B9;
+pub(crate) const WEYL: u32 = 0x9E37_79B9;
 
 /// The random numbers of one cell.
 ///
