@@ -582,7 +582,17 @@ impl Cellular {
     #[inline(always)]
     fn search_in<R: Real, const D: usize>(&self, p: [R; D], whole: bool) -> Nearest<R, D> {
         let metric = self.metric;
-        let (cell, frac) = split_point(p);
+        // Where the near cells go whole, an `f32` point's coordinates split in one vector
+        // (the same bits as `split_point`).
+        let vector = if whole && R::BINARY32 {
+            arch::split_point(p.map(R::to_f32))
+        } else {
+            None
+        };
+        let (cell, frac) = match vector {
+            Some((cell, frac)) => (cell, frac.map(R::from_f32)),
+            None => split_point(p),
+        };
         let needs_f2 = self.output.needs_f2();
         let (lo, hi) = self.extent();
         let mut best = Nearest {

@@ -10,6 +10,7 @@
 //! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`), wasm32 as above (`f32x4.sqrt`), four lanes at a time | one lane at a time |
 //! | [`simplex_corners`]: simplex noise's corners over a batch's 16 `f32` lanes, 2D and 3D | x86-64 (SSE2: the hashes' 32-bit products by `pmuludq`, the gradients' signed offsets by masks) | `false`: the portable body, which the compiler vectorises |
 //! | [`cellular_near`]: cellular noise's 3ᴰ near cells in `f32`, 2D and 3D, as lanes in near order | x86-64 (SSE2: hashes and draws by `pmuludq`, the least key by `minps` and `movmskps`) | `false`: the portable body |
+//! | [`split_point`]: `Real::split` of an `f32` point's coordinates (cellular noise's search) | x86-64 (SSE2, `split_lanes`' rounding by `1.5·2²³`) | `None`: coordinate by coordinate |
 //! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
@@ -70,7 +71,10 @@ pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sq
 // * `cellular_near(k, out)`: cellular noise's 3ᴰ near cells (`Cellular::near_whole`) in
 //   `f32`, 2D and 3D, in near order as lanes, and the nearest and second-nearest of them,
 //   bit-identical to the portable body; `false` where the target has no kernel.
-pub(crate) use selected::{CELLULAR_NEAR, cellular_near};
+// * `split_point(p)`: `Real::split` of each coordinate of an `f32` point (up to 4) in one
+//   vector, bit-identical; `None` where the target has none or a coordinate is not within
+//   ±2²².
+pub(crate) use selected::{CELLULAR_NEAR, cellular_near, split_point};
 
 /// The lanes of [`cellular_near`]: the 3ᴰ cells around a point's in near order (the
 /// cellular module's), padded to 28 (`unit`: each axis's offset times 1 in 16.16; `prime`:
@@ -151,6 +155,74 @@ mod tests {
     use crate::Real;
     use crate::batch::LANES;
     use std::vec;
+
+    /// [`super::split_point`] is `Real::split` of each coordinate bit for bit where it
+    /// answers, and answers (on x86-64) for every point within ±2²²: edge cases (zeros,
+    /// integers, values just below integers whose fraction rounds to 1, the range's ends,
+    /// NaN, infinities) and a million points of random bits and of random values in range.
+    #[test]
+    fn split_point_is_the_scalar_split() {
+        let edges = [
+            0.0f32,
+            -0.0,
+            1.0,
+            -1.0,
+            -1e-10,
+            -1e-30,
+            1e-45,
+            0.999_999_94,
+            -0.999_999_94,
+            4_194_303.5,
+            -4_194_303.5,
+            4_194_304.0,
+            -4_194_304.0,
+            8_388_607.0,
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -2.5,
+            7.25,
+        ];
+        let mut state = 0x9E37_79B9u32;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 17;
+            state ^= state << 5;
+            state
+        };
+        fn check<const D: usize>(p: [f32; D]) {
+            let within = p.iter().all(|x| x.abs() < 4_194_304.0);
+            match super::split_point(p) {
+                Some((cell, frac)) => {
+                    assert!(within, "{p:?}");
+                    for a in 0..D {
+                        let (c, f) = Real::split(p[a]);
+                        assert_eq!((cell[a], frac[a].to_bits()), (c, f.to_bits()), "{p:?}");
+                    }
+                }
+                None => assert!(
+                    !within || cfg!(not(all(target_arch = "x86_64", target_feature = "sse2"))),
+                    "{p:?}"
+                ),
+            }
+        }
+        for &x in &edges {
+            for &y in &edges {
+                check([x, y]);
+                check([y, x, 0.5]);
+                check([x]);
+                check([0.25, x, y, -3.0]);
+            }
+        }
+        for i in 0..1_000_000 {
+            let bits = f32::from_bits(next());
+            let value = (next() as i32) as f32 / (1u32 << (next() % 24)) as f32;
+            let x = if i % 2 == 0 { bits } else { value };
+            let y = (next() as i32 >> (next() % 31)) as f32 * 0.37;
+            check([x, y]);
+            check([y, x, value]);
+        }
+    }
 
     /// [`super::sqrt_lanes`] is `Real::sqrt` bit for bit: edge cases (zeros, negatives, NaN,
     /// infinities, subnormals, the largest value) and a million values spread over every

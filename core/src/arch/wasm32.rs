@@ -163,3 +163,9 @@ pub(crate) fn cellular_near<const D: usize>(
 ) -> bool {
     false
 }
+
+/// No vector split: the caller splits coordinate by coordinate.
+#[inline]
+pub(crate) fn split_point<const D: usize>(_: [f32; D]) -> Option<([i32; D], [f32; D])> {
+    None
+}

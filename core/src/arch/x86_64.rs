@@ -280,16 +280,18 @@ pub(crate) fn cellular_near<const D: usize>(
     out: &mut super::NearPair,
 ) -> bool {
     match D {
-        2 => near_cells::<D, 3>(k, out),
-        3 => near_cells::<D, 7>(k, out),
+        // The own cell by scalar operations, the 8 others as 2 vectors.
+        2 => near_cells::<D, 2, true>(k, out),
+        3 => near_cells::<D, 7, false>(k, out),
         _ => return false,
     }
     true
 }
 
-/// [`cellular_near`] over `G` vectors of 4 cells (the 3ᴰ and padding).
+/// [`cellular_near`] over `G` vectors of 4 cells (the 3ᴰ and padding), after the own cell
+/// (lane 0) by scalar operations where `OWN`.
 #[inline(always)]
-fn near_cells<const D: usize, const G: usize>(
+fn near_cells<const D: usize, const G: usize, const OWN: bool>(
     k: &super::CellularCells<'_, D>,
     out: &mut super::NearPair,
 ) {
@@ -310,11 +312,40 @@ fn near_cells<const D: usize, const G: usize>(
     let jitter = splat(k.jitter);
     let sign = set_splat_m128(-0.0);
     let infinity = set_splat_m128(f32::INFINITY);
+    let base = usize::from(OWN);
+    // The own cell (offsets 0), where `OWN`: the vector body's operations on one lane.
+    let own = OWN.then(|| {
+        let mut h = k.start;
+        for (a, &c) in k.cell.iter().enumerate() {
+            h ^= PrimeHash::axis(a, c);
+        }
+        let h = PrimeHash::finish(h);
+        let bits = crate::hash::mix(h.wrapping_add(WEYL));
+        let mut q = [0.0f32; 3];
+        let mut key = 0.0f32;
+        for (a, (q, frac)) in q.iter_mut().zip(k.frac).enumerate() {
+            let mut u = ((bits >> (32 - width * (a as u32 + 1))) & ((1 << width) - 1)) as i32;
+            u <<= 16 - width;
+            if k.jitter != UNIT {
+                u = UNIT / 2 + ((u - UNIT / 2).wrapping_mul(k.jitter) >> 16);
+            }
+            *q = u as f32 * (1.0 / UNIT as f32) - frac;
+            let axis_key = if k.squares { *q * *q } else { q.abs() };
+            key = if a == 0 {
+                axis_key
+            } else if k.chebyshev {
+                if axis_key > key { axis_key } else { key }
+            } else {
+                key + axis_key
+            };
+        }
+        (key, q, h)
+    });
     let mut keys = [zeroed_m128(); G];
     let mut hashes = [zeroed_m128i(); G];
     let mut offsets = [[zeroed_m128(); G]; D];
     for g in 0..G {
-        let at = 4 * g;
+        let at = base + 4 * g;
         let lanes = |x: &[i32; 28]| m128i::from([x[at], x[at + 1], x[at + 2], x[at + 3]]);
         // The cell's hash: the start, each axis's term `(c + kₐ)·Pₐ = c·Pₐ + kₐ·Pₐ`, the
         // product with the multiplier.
@@ -375,23 +406,56 @@ fn near_cells<const D: usize, const G: usize>(
         keys[g] = select(cast_to_m128_from_m128i(valid), key, infinity);
     }
     let lane = |v: &[m128; G], i: usize| v[(i / 4).min(G - 1)].to_array()[i % 4];
+    // The nearest and second-nearest cells: `Some(i)` for lane `base + i` of the vectors,
+    // `None` for the own cell, which comes first in near order (it wins ties).
     let first = first_least(&keys);
-    out.hash = <[i32; 4]>::from(hashes[(first / 4).min(G - 1)])[first % 4] as u32;
-    out.key[0] = lane(&keys, first);
-    out.q[0] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], first));
+    let first = match own {
+        Some((key, ..)) if key <= lane(&keys, first) => None,
+        _ => Some(first),
+    };
+    let mut nearest = [first, None];
+    // The nearest's key, read before the second's search takes it out of the running.
+    let first_key = first.map(|i| lane(&keys, i));
     if k.second {
-        // The others: the first lane out of the running.
-        for (g, key) in keys.iter_mut().enumerate() {
-            let at = 4 * g as i32;
-            let is_first = cmp_eq_mask_i32_m128i(
-                splat(first as i32),
-                m128i::from([at, at + 1, at + 2, at + 3]),
-            );
-            *key = select(cast_to_m128_from_m128i(is_first), infinity, *key);
+        // The others: the first out of the running.
+        if let Some(first) = first {
+            for (g, key) in keys.iter_mut().enumerate() {
+                let at = 4 * g as i32;
+                let is_first = cmp_eq_mask_i32_m128i(
+                    splat(first as i32),
+                    m128i::from([at, at + 1, at + 2, at + 3]),
+                );
+                *key = select(cast_to_m128_from_m128i(is_first), infinity, *key);
+            }
         }
         let second = first_least(&keys);
-        out.key[1] = lane(&keys, second);
-        out.q[1] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], second));
+        nearest[1] = match own {
+            Some((key, ..)) if first.is_some() && key <= lane(&keys, second) => None,
+            _ => Some(second),
+        };
+    }
+    let (own_key, own_q, own_hash) = own.unwrap_or((0.0, [0.0; 3], 0));
+    for (j, cell) in nearest
+        .into_iter()
+        .enumerate()
+        .take(1 + usize::from(k.second))
+    {
+        if let Some(i) = cell {
+            out.key[j] = match (j, first_key) {
+                (0, Some(key)) => key,
+                _ => lane(&keys, i),
+            };
+            out.q[j] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], i));
+            if j == 0 {
+                out.hash = <[i32; 4]>::from(hashes[(i / 4).min(G - 1)])[i % 4] as u32;
+            }
+        } else {
+            out.key[j] = own_key;
+            out.q[j] = own_q;
+            if j == 0 {
+                out.hash = own_hash;
+            }
+        }
     }
 }
 
@@ -417,4 +481,39 @@ fn first_least<const G: usize>(keys: &[m128; G]) -> usize {
         found |= (move_mask_m128(cmp_eq_mask_m128(*key, least)) as u32) << (4 * g);
     }
     found.trailing_zeros() as usize
+}
+
+/// [`Real::split`](crate::Real::split) of each of the `D` (up to 4) coordinates of a point in
+/// `f32`, in one vector: `split_lanes`' arithmetic (the `1.5·2²³` rounding, one correction,
+/// the fraction's carry), so the same bits (a test compares them). `None` unless every
+/// coordinate is within `(−2²², 2²²)` (NaN is not).
+#[inline]
+pub(crate) fn split_point<const D: usize>(p: [f32; D]) -> Option<([i32; D], [f32; D])> {
+    if D > 4 {
+        return None;
+    }
+    const MAGIC: f32 = 12_582_912.0;
+    let x = m128::from_array(core::array::from_fn(|a| if a < D { p[a] } else { 0.0 }));
+    let magnitude = bitandnot_m128(set_splat_m128(-0.0), x);
+    if move_mask_m128(cmp_gt_mask_m128(set_splat_m128(4_194_304.0), magnitude)) != 0b1111 {
+        return None;
+    }
+    let nearest = sub_i32_m128i(
+        cast_to_m128i_from_m128(add_m128(x, set_splat_m128(MAGIC))),
+        set_splat_i32_m128i(MAGIC.to_bits() as i32),
+    );
+    // `nearest − (nearest > x)`: the mask is −1 where the rounding went up.
+    let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(nearest), x);
+    let cell = add_i32_m128i(nearest, cast_to_m128i_from_m128(above));
+    let frac = sub_m128(x, convert_to_m128_from_i32_m128i(cell));
+    // A fraction that rounded to 1 carries into the cell.
+    let up = cmp_ge_mask_m128(frac, set_splat_m128(1.0));
+    let cell = sub_i32_m128i(cell, cast_to_m128i_from_m128(up));
+    let frac = add_m128(bitandnot_m128(up, frac), zeroed_m128());
+    let cell: [i32; 4] = cell.into();
+    let frac = frac.to_array();
+    Some((
+        core::array::from_fn(|a| cell[a.min(3)]),
+        core::array::from_fn(|a| frac[a.min(3)]),
+    ))
 }
