@@ -7,7 +7,8 @@
 //! measures the ratios themselves: in each of [`ROUNDS`] rounds, every peer and bandnoise fill
 //! the same [`PAIRED_ROWS`] rows one after the other (milliseconds apart), the round's ratio
 //! is bandnoise's time over the fastest peer's of that round, and the table gives the median
-//! and the quartiles over rounds.
+//! and the quartiles over rounds; where FastNoise Lite has the function, also the point
+//! samples' ratio to it (issue 19's measure for cellular noise).
 //!
 //! `cargo bench -p bandnoise-bench --bench peers` (or `scripts/bench-peers.sh`, which also
 //! counts instructions with callgrind). With `-- --test` each workload runs once, unmeasured,
@@ -131,30 +132,38 @@ fn paired_table(layout: Layout) {
         "\nratio to the fastest peer, layout {}, paired: median [quartiles] of {ROUNDS} interleaved rounds of {PAIRED_ROWS} rows",
         layout.name
     );
-    println!("| function | point ratio | batch ratio |");
-    println!("|---|---|---|");
+    println!("| function | point ratio | batch ratio | point × fastnoise-lite |");
+    println!("|---|---|---|---|");
     for function in FUNCTIONS {
         let peer = peer_function(function);
-        let peers: Vec<Run> = IMPLEMENTATIONS[2..]
+        let peers: Vec<(&str, Run)> = IMPLEMENTATIONS[2..]
             .iter()
-            .filter_map(|&i| workload(peer, i, layout))
+            .filter_map(|&i| Some((i, workload(peer, i, layout)?)))
             .collect();
         let ours = [IMPLEMENTATIONS[0], IMPLEMENTATIONS[1]].map(|i| workload(function, i, layout));
         if peers.is_empty() {
             continue;
         }
+        // FastNoise Lite's same function (issue 19 compares cellular noise with it).
+        let fastnoise = peers.iter().position(|(i, _)| *i == "fastnoise-lite");
         let mut ratios = [Vec::new(), Vec::new()];
+        let mut to_fastnoise = Vec::new();
         // One round unmeasured, to warm caches and branch predictors.
         for round in 0..=ROUNDS {
-            let fastest = peers
+            let times: Vec<f64> = peers
                 .iter()
-                .map(|run| seconds(run, PAIRED_ROWS, &mut out))
-                .fold(f64::INFINITY, f64::min);
-            for (ratios, run) in ratios.iter_mut().zip(&ours) {
+                .map(|(_, run)| seconds(run, PAIRED_ROWS, &mut out))
+                .collect();
+            let fastest = times.iter().copied().fold(f64::INFINITY, f64::min);
+            let fastnoise_time = fastnoise.map(|i| times[i]);
+            for (i, (ratios, run)) in ratios.iter_mut().zip(&ours).enumerate() {
                 if let Some(run) = run {
                     let t = seconds(run, PAIRED_ROWS, &mut out);
                     if round > 0 {
                         ratios.push(t / fastest);
+                        if let (0, Some(f)) = (i, fastnoise_time) {
+                            to_fastnoise.push(t / f);
+                        }
                     }
                 }
             }
@@ -167,7 +176,12 @@ fn paired_table(layout: Layout) {
             format!("{m:.2} [{q1:.2}–{q3:.2}]")
         };
         let [point, batch] = &mut ratios;
-        println!("| {function} | {} | {} |", cell(point), cell(batch));
+        println!(
+            "| {function} | {} | {} | {} |",
+            cell(point),
+            cell(batch),
+            cell(&mut to_fastnoise)
+        );
     }
 }
 

@@ -25,7 +25,8 @@
 //! placed whole instead and offered in the same order (in `f32` by an SSE2 kernel, 4 cells per
 //! vector, `arch::cellular_near`): the same `F1` and `F2` bit for bit,
 //! faster where a mispredicted prune costs more than the hashes it saves (`bench/README.md`,
-//! "cellular noise's near cells whole" and "cellular noise's multiplicative cell hash"). A 3³
+//! "cellular noise's near cells whole" and "cellular noise's multiplicative cell hash and SSE2
+//! kernel"). A 3³
 //! search, as most peers do, can miss `F2` (and, with the peers' looser placements, `F1`):
 //! with `jitter = 1` the second-nearest point can lie two cells away. How far the search can
 //! go is bounded: `F2` is never beyond the own cell's point and the near face neighbour's
