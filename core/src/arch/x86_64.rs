@@ -408,14 +408,14 @@ fn near_cells<const D: usize, const G: usize, const OWN: bool>(
     let lane = |v: &[m128; G], i: usize| v[(i / 4).min(G - 1)].to_array()[i % 4];
     // The nearest and second-nearest cells: `Some(i)` for lane `base + i` of the vectors,
     // `None` for the own cell, which comes first in near order (it wins ties).
-    let first = first_least(&keys);
-    let first = match own {
-        Some((key, ..)) if key <= lane(&keys, first) => None,
-        _ => Some(first),
+    // The keys come from the least values themselves, so the distance does not wait for the
+    // lane search (equal keys have equal bits: none is −0).
+    let (first, least) = first_least(&keys);
+    let (first, first_key) = match own {
+        Some((key, ..)) if key <= least => (None, key),
+        _ => (Some(first), least),
     };
-    let mut nearest = [first, None];
-    // The nearest's key, read before the second's search takes it out of the running.
-    let first_key = first.map(|i| lane(&keys, i));
+    let mut nearest = [(first, first_key), (None, 0.0)];
     if k.second {
         // The others: the first out of the running.
         if let Some(first) = first {
@@ -428,29 +428,25 @@ fn near_cells<const D: usize, const G: usize, const OWN: bool>(
                 *key = select(cast_to_m128_from_m128i(is_first), infinity, *key);
             }
         }
-        let second = first_least(&keys);
+        let (second, least) = first_least(&keys);
         nearest[1] = match own {
-            Some((key, ..)) if first.is_some() && key <= lane(&keys, second) => None,
-            _ => Some(second),
+            Some((key, ..)) if first.is_some() && key <= least => (None, key),
+            _ => (Some(second), least),
         };
     }
-    let (own_key, own_q, own_hash) = own.unwrap_or((0.0, [0.0; 3], 0));
-    for (j, cell) in nearest
+    let (_, own_q, own_hash) = own.unwrap_or((0.0, [0.0; 3], 0));
+    for (j, (cell, key)) in nearest
         .into_iter()
         .enumerate()
         .take(1 + usize::from(k.second))
     {
+        out.key[j] = key;
         if let Some(i) = cell {
-            out.key[j] = match (j, first_key) {
-                (0, Some(key)) => key,
-                _ => lane(&keys, i),
-            };
             out.q[j] = core::array::from_fn(|a| lane(&offsets[a.min(D - 1)], i));
             if j == 0 {
                 out.hash = <[i32; 4]>::from(hashes[(i / 4).min(G - 1)])[i % 4] as u32;
             }
         } else {
-            out.key[j] = own_key;
             out.q[j] = own_q;
             if j == 0 {
                 out.hash = own_hash;
@@ -460,10 +456,10 @@ fn near_cells<const D: usize, const G: usize, const OWN: bool>(
 }
 
 /// The first lane of `keys` (`G` vectors of 4 finite or infinite keys, not all infinite) whose
-/// key is the least: `minps` over the vectors and across the lanes, then `movmskps` of the
-/// lanes equal to it.
+/// key is the least, and the least: `minps` over the vectors and across the lanes, then
+/// `movmskps` of the lanes equal to it.
 #[inline(always)]
-fn first_least<const G: usize>(keys: &[m128; G]) -> usize {
+fn first_least<const G: usize>(keys: &[m128; G]) -> (usize, f32) {
     let mut least = keys[0];
     for key in &keys[1..] {
         least = min_m128(least, *key);
@@ -480,7 +476,7 @@ fn first_least<const G: usize>(keys: &[m128; G]) -> usize {
     for (g, key) in keys.iter().enumerate() {
         found |= (move_mask_m128(cmp_eq_mask_m128(*key, least)) as u32) << (4 * g);
     }
-    found.trailing_zeros() as usize
+    (found.trailing_zeros() as usize, get_f32_from_m128_s(least))
 }
 
 /// [`Real::split`](crate::Real::split) of each of the `D` (up to 4) coordinates of a point in
@@ -506,10 +502,18 @@ pub(crate) fn split_point<const D: usize>(p: [f32; D]) -> Option<([i32; D], [f32
     let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(nearest), x);
     let cell = add_i32_m128i(nearest, cast_to_m128i_from_m128(above));
     let frac = sub_m128(x, convert_to_m128_from_i32_m128i(cell));
-    // A fraction that rounded to 1 carries into the cell.
+    // A fraction that rounded to 1 carries into the cell. Rare (tiny negative coordinates),
+    // so tested by a branch: the cell is ready for the hash without waiting for the test.
     let up = cmp_ge_mask_m128(frac, set_splat_m128(1.0));
-    let cell = sub_i32_m128i(cell, cast_to_m128i_from_m128(up));
-    let frac = add_m128(bitandnot_m128(up, frac), zeroed_m128());
+    let (cell, frac) = if move_mask_m128(up) == 0 {
+        (cell, frac)
+    } else {
+        (
+            sub_i32_m128i(cell, cast_to_m128i_from_m128(up)),
+            bitandnot_m128(up, frac),
+        )
+    };
+    let frac = add_m128(frac, zeroed_m128());
     let cell: [i32; 4] = cell.into();
     let frac = frac.to_array();
     Some((
