@@ -588,17 +588,6 @@ impl Cellular {
     #[inline(always)]
     fn search_in<R: Real, const D: usize>(&self, p: [R; D], whole: bool) -> Nearest<R, D> {
         let metric = self.metric;
-        // Where the near cells go whole, an `f32` point's coordinates split in one vector
-        // (the same bits as `split_point`).
-        let vector = if whole && R::BINARY32 {
-            arch::split_point(p.map(R::to_f32))
-        } else {
-            None
-        };
-        let (cell, frac) = match vector {
-            Some((cell, frac)) => (cell, frac.map(R::from_f32)),
-            None => split_point(p),
-        };
         let needs_f2 = self.output.needs_f2();
         let (lo, hi) = self.extent();
         let mut best = Nearest {
@@ -606,6 +595,14 @@ impl Cellular {
             offsets: [[R::ZERO; D]; 2],
             hash: 0,
         };
+        // Where the near cells go whole, the target's kernel may split the point and search
+        // them; otherwise the point is split here.
+        let kernel = if whole {
+            self.near_kernel(p, &mut best)
+        } else {
+            None
+        };
+        let (cell, frac) = kernel.unwrap_or_else(|| split_point(p));
 
         // Offers the point of the cell `cell + k` (whose hash is `key`).
         let offer = |k: &[i32; D], key: u32, best: &mut Nearest<R, D>| {
@@ -649,7 +646,9 @@ impl Cellular {
             }
         };
 
-        if whole {
+        if kernel.is_some() {
+            // Rings 0 and 1 are searched.
+        } else if whole {
             self.near_whole(cell, frac, &mut best);
         } else {
             // Rings 0 and 1, the 3ᴰ cells around the point's, nearest boxes first (see
@@ -716,9 +715,6 @@ impl Cellular {
         frac: [R; D],
         best: &mut Nearest<R, D>,
     ) {
-        if self.near_kernel(cell, frac, best) {
-            return;
-        }
         // Arrays of exactly 3ᴰ cells, so no lane is computed for nothing (4D takes the pruned
         // walk).
         match D {
@@ -728,26 +724,20 @@ impl Cellular {
         }
     }
 
-    /// [`near_whole`](Self::near_whole) through the target's kernel
-    /// ([`arch::cellular_near`], `f32` in 2D and 3D on x86-64): the same bits. `false`
-    /// (nothing written) where there is none, or for a fraction that is not finite.
+    /// The point's split and [`near_whole`](Self::near_whole) through the target's kernel
+    /// ([`arch::cellular_near`], `f32` in 2D and 3D on x86-64): the same bits. The cell and
+    /// fraction, or `None` (nothing written) where there is no kernel or the point is beyond
+    /// its range (±2²², or not finite).
     #[inline(always)]
     fn near_kernel<R: Real, const D: usize>(
         &self,
-        cell: [i32; D],
-        frac: [R; D],
+        p: [R; D],
         best: &mut Nearest<R, D>,
-    ) -> bool {
+    ) -> Option<([i32; D], [R; D])> {
         if !arch::CELLULAR_NEAR || !R::BINARY32 || !(D == 2 || D == 3) {
-            return false;
-        }
-        let frac = frac.map(R::to_f32);
-        if !frac.iter().all(|f| f.is_finite()) {
-            return false;
+            return None;
         }
         let k = CellularCells {
-            cell,
-            frac,
             start: self.hash.start(),
             jitter: self.jitter,
             squares: matches!(self.metric, Metric::Euclidean | Metric::EuclideanSquared),
@@ -760,16 +750,14 @@ impl Cellular {
             q: [[0.0; 3]; 2],
             hash: 0,
         };
-        if !arch::cellular_near(&k, &mut out) {
-            return false;
-        }
+        let (cell, frac) = arch::cellular_near(p.map(R::to_f32), &k, &mut out)?;
         let n = if self.output.needs_f2() { 2 } else { 1 };
         for i in 0..n {
             best.keys[i] = R::from_f32(out.key[i]);
             best.offsets[i] = core::array::from_fn(|a| R::from_f32(out.q[i][a.min(2)]));
         }
         best.hash = out.hash;
-        true
+        Some((cell, frac.map(R::from_f32)))
     }
 
     /// [`near_whole`](Self::near_whole) over its `C = 3ᴰ` cells.

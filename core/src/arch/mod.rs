@@ -9,8 +9,7 @@
 //! | [`perlin2`], [`perlin3`], [`perlin4`]: Perlin's improved noise at one point in `f32` | x86-64 (SSE2, part of the architecture); wasm32 with `simd128` and without the `small` feature: one kernel ([`vector`]) over each target's 4-lane vector | `None`: the shared kernel of [`lattice`](crate::lattice) |
 //! | [`sqrt_lanes`]: [`Real::sqrt`](crate::Real::sqrt) of 16 `f32` lanes (Wiener noise's batches) | x86-64 (SSE2 `sqrtps`), wasm32 as above (`f32x4.sqrt`), four lanes at a time | one lane at a time |
 //! | [`simplex_corners`]: simplex noise's corners over a batch's 16 `f32` lanes, 2D and 3D | x86-64 (SSE2: the hashes' 32-bit products by `pmuludq`, the gradients' signed offsets by masks) | `false`: the portable body, which the compiler vectorises |
-//! | [`cellular_near`]: cellular noise's 3ᴰ near cells in `f32`, 2D and 3D, as lanes in near order | x86-64 (SSE2: hashes and draws by `pmuludq`, the least key by `minps` and `movmskps`) | `false`: the portable body |
-//! | [`split_point`]: `Real::split` of an `f32` point's coordinates (cellular noise's search) | x86-64 (SSE2, `split_lanes`' rounding by `1.5·2²³`) | `None`: coordinate by coordinate |
+//! | [`cellular_near`]: cellular noise's point split and 3ᴰ near cells in `f32`, 2D and 3D, as lanes in near order | x86-64 (SSE2: the split by `split_lanes`' rounding, hashes and draws by `pmuludq`, the least key by `minps` and `movmskps`) | `None`: the portable body |
 //! | [`OCTAVES_AS_LANES`]: whether [`MixedTurbulence`](crate::lattice::MixedTurbulence) interpolates its octaves as lanes of one lattice body | x86-64 (`true`: vectorised) | `false`: octave by octave |
 //!
 //! Every kernel computes the portable kernel's operations on the same numbers in the same order,
@@ -68,13 +67,14 @@ pub(crate) use perlin_point::{
 //   portable body; `false` where the target has no kernel or not for this dimension.
 pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sqrt_lanes};
 // * `CELLULAR_NEAR`: whether this target has `cellular_near`.
-// * `cellular_near(k, out)`: cellular noise's 3ᴰ near cells (`Cellular::near_whole`) in
-//   `f32`, 2D and 3D, in near order as lanes, and the nearest and second-nearest of them,
-//   bit-identical to the portable body; `false` where the target has no kernel.
-// * `split_point(p)`: `Real::split` of each coordinate of an `f32` point (up to 4) in one
-//   vector, bit-identical; `None` where the target has none or a coordinate is not within
-//   ±2²².
-pub(crate) use selected::{CELLULAR_NEAR, cellular_near, split_point};
+// * `cellular_near(p, k, out)`: cellular noise's point split and its 3ᴰ near cells
+//   (`Cellular::near_whole`) in `f32`, 2D and 3D, in near order as lanes, and the nearest and
+//   second-nearest of them, bit-identical to the portable body; the point's cell and
+//   fraction, or `None` where the target has no kernel or a coordinate is not within ±2²².
+pub(crate) use selected::{CELLULAR_NEAR, cellular_near};
+// * `split_point(p)` (tests only): the kernel's split as arrays, `None` where there is none.
+#[cfg(test)]
+pub(crate) use selected::split_point;
 
 /// The lanes of [`cellular_near`]: the 3ᴰ cells around a point's in near order (the
 /// cellular module's), padded to 28 (`unit`: each axis's offset times 1 in 16.16; `prime`:
@@ -86,8 +86,8 @@ pub(crate) struct NearLanes {
     pub(crate) prime: [[i32; 28]; 3],
 }
 
-/// What [`cellular_near`] takes: the point's cell and fraction, the hash's start, the jitter
-/// (16.16), the metric, and the lanes' offsets.
+/// What [`cellular_near`] takes besides the point: the hash's start, the jitter (16.16), the
+/// metric, and the lanes' offsets.
 #[cfg_attr(
     not(all(target_arch = "x86_64", target_feature = "sse2")),
     allow(
@@ -95,11 +95,7 @@ pub(crate) struct NearLanes {
         reason = "only the x86-64 kernel reads it; the others decline"
     )
 )]
-pub(crate) struct CellularCells<'a, const D: usize> {
-    /// The point's cell.
-    pub(crate) cell: [i32; D],
-    /// The point's fraction in it (finite).
-    pub(crate) frac: [f32; D],
+pub(crate) struct CellularCells<'a> {
     /// The cell hash's start (the mixed seed).
     pub(crate) start: u32,
     /// The jitter in 16.16 units.

@@ -71,14 +71,15 @@ pub(crate) const CELLULAR_NEAR: bool = false;
 
 #[inline]
 pub(crate) fn cellular_near<const D: usize>(
-    _: &super::CellularCells<'_, D>,
+    _: [f32; D],
+    _: &super::CellularCells<'_>,
     _: &mut super::NearPair,
-) -> bool {
-    false
+) -> Option<([i32; D], [f32; D])> {
+    None
 }
 
-/// No vector split: the caller splits coordinate by coordinate.
-#[inline]
+/// No vector split (its test's entry point).
+#[cfg(test)]
 pub(crate) fn split_point<const D: usize>(_: [f32; D]) -> Option<([i32; D], [f32; D])> {
     None
 }

@@ -272,27 +272,59 @@ pub(crate) const CELLULAR_NEAR: bool = true;
 /// them): each cell's hash and its generator's first draw by `pmuludq` products, the point's
 /// offsets from it, the offsets from the sample and the cell's key; then the first cell of
 /// least key and, where asked, the first of least key among the others (what
-/// `keep_nearest` over the cells in near order keeps). `false` (nothing written) in other
-/// dimensions.
+/// `keep_nearest` over the cells in near order keeps). The point is split here too
+/// ([`split_vectors`]), so its cell and fraction reach the hashes in registers (read back
+/// from memory, they stalled store forwarding: `bench/README.md`); they are returned for the
+/// rings beyond. `None` (nothing written) in other dimensions or for a point beyond ±2²².
 #[inline]
 pub(crate) fn cellular_near<const D: usize>(
-    k: &super::CellularCells<'_, D>,
+    p: [f32; D],
+    k: &super::CellularCells<'_>,
     out: &mut super::NearPair,
-) -> bool {
+) -> Option<([i32; D], [f32; D])> {
+    if D != 2 && D != 3 {
+        return None;
+    }
+    let (cell, frac) = split_vectors(p)?;
     match D {
         // The own cell by scalar operations, the 8 others as 2 vectors.
-        2 => near_cells::<D, 2, true>(k, out),
-        3 => near_cells::<D, 7, false>(k, out),
-        _ => return false,
+        2 => near_cells::<D, 2, true>(cell, frac, k, out),
+        _ => near_cells::<D, 7, false>(cell, frac, k, out),
     }
-    true
+    let (cell, frac) = (<[i32; 4]>::from(cell), frac.to_array());
+    Some((
+        core::array::from_fn(|a| cell[a.min(3)]),
+        core::array::from_fn(|a| frac[a.min(3)]),
+    ))
+}
+
+/// Lane `a` (0 to 2) of `v` in every lane.
+#[inline(always)]
+fn broadcast_i32(v: m128i, a: usize) -> m128i {
+    match a {
+        0 => shuffle_ai_f32_all_m128i::<0b00_00_00_00>(v),
+        1 => shuffle_ai_f32_all_m128i::<0b01_01_01_01>(v),
+        _ => shuffle_ai_f32_all_m128i::<0b10_10_10_10>(v),
+    }
+}
+
+/// Lane `a` (0 to 2) of `v` in every lane.
+#[inline(always)]
+fn broadcast_f32(v: m128, a: usize) -> m128 {
+    match a {
+        0 => shuffle_abi_f32_all_m128::<0b00_00_00_00>(v, v),
+        1 => shuffle_abi_f32_all_m128::<0b01_01_01_01>(v, v),
+        _ => shuffle_abi_f32_all_m128::<0b10_10_10_10>(v, v),
+    }
 }
 
 /// [`cellular_near`] over `G` vectors of 4 cells (the 3ᴰ and padding), after the own cell
 /// (lane 0) by scalar operations where `OWN`.
 #[inline(always)]
 fn near_cells<const D: usize, const G: usize, const OWN: bool>(
-    k: &super::CellularCells<'_, D>,
+    cell: m128i,
+    fraction: m128,
+    k: &super::CellularCells<'_>,
     out: &mut super::NearPair,
 ) {
     use crate::hash::prime::PrimeHash;
@@ -305,8 +337,10 @@ fn near_cells<const D: usize, const G: usize, const OWN: bool>(
     let mix = MIX.map(|m| splat(m as i32));
     let weyl = splat(WEYL as i32);
     let start = splat(k.start as i32);
-    let term: [m128i; D] = core::array::from_fn(|a| splat(PrimeHash::axis(a, k.cell[a]) as i32));
-    let frac: [m128; D] = core::array::from_fn(|a| set_splat_m128(k.frac[a]));
+    // Each axis's term `c·Pₐ` and fraction, in every lane.
+    let products = mul_u32(cell, m128i::from(PrimeHash::PRIMES.map(|p| p as i32)));
+    let term: [m128i; D] = core::array::from_fn(|a| broadcast_i32(products, a));
+    let frac: [m128; D] = core::array::from_fn(|a| broadcast_f32(fraction, a));
     let scale = set_splat_m128(1.0 / UNIT as f32);
     let half = splat(UNIT / 2);
     let jitter = splat(k.jitter);
@@ -315,15 +349,16 @@ fn near_cells<const D: usize, const G: usize, const OWN: bool>(
     let base = usize::from(OWN);
     // The own cell (offsets 0), where `OWN`: the vector body's operations on one lane.
     let own = OWN.then(|| {
+        let (cell, fraction) = (<[i32; 4]>::from(cell), fraction.to_array());
         let mut h = k.start;
-        for (a, &c) in k.cell.iter().enumerate() {
+        for (a, &c) in cell.iter().enumerate().take(D) {
             h ^= PrimeHash::axis(a, c);
         }
         let h = PrimeHash::finish(h);
         let bits = crate::hash::mix(h.wrapping_add(WEYL));
         let mut q = [0.0f32; 3];
         let mut key = 0.0f32;
-        for (a, (q, frac)) in q.iter_mut().zip(k.frac).enumerate() {
+        for (a, (q, frac)) in q.iter_mut().zip(fraction).enumerate().take(D) {
             let mut u = ((bits >> (32 - width * (a as u32 + 1))) & ((1 << width) - 1)) as i32;
             u <<= 16 - width;
             if k.jitter != UNIT {
@@ -482,9 +517,9 @@ fn first_least<const G: usize>(keys: &[m128; G]) -> (usize, f32) {
 /// [`Real::split`](crate::Real::split) of each of the `D` (up to 4) coordinates of a point in
 /// `f32`, in one vector: `split_lanes`' arithmetic (the `1.5·2²³` rounding, one correction,
 /// the fraction's carry), so the same bits (a test compares them). `None` unless every
-/// coordinate is within `(−2²², 2²²)` (NaN is not).
-#[inline]
-pub(crate) fn split_point<const D: usize>(p: [f32; D]) -> Option<([i32; D], [f32; D])> {
+/// coordinate is within `(−2²², 2²²)` (NaN is not). Lanes past `D` hold 0's split.
+#[inline(always)]
+fn split_vectors<const D: usize>(p: [f32; D]) -> Option<(m128i, m128)> {
     if D > 4 {
         return None;
     }
@@ -514,8 +549,14 @@ pub(crate) fn split_point<const D: usize>(p: [f32; D]) -> Option<([i32; D], [f32
         )
     };
     let frac = add_m128(frac, zeroed_m128());
-    let cell: [i32; 4] = cell.into();
-    let frac = frac.to_array();
+    Some((cell, frac))
+}
+
+/// [`split_vectors`] as arrays, for its test.
+#[cfg(test)]
+pub(crate) fn split_point<const D: usize>(p: [f32; D]) -> Option<([i32; D], [f32; D])> {
+    let (cell, frac) = split_vectors(p)?;
+    let (cell, frac) = (<[i32; 4]>::from(cell), frac.to_array());
     Some((
         core::array::from_fn(|a| cell[a.min(3)]),
         core::array::from_fn(|a| frac[a.min(3)]),
