@@ -174,12 +174,12 @@ impl<R: Real, const D: usize> Nearest<R, D> {
 
     /// `F1` (`i = 0`) or `F2` (`i = 1`) in `metric`. The Euclidean distance is the length of
     /// the offset ([`norm`](crate::real::sealed::Sealed::norm)): in fixed point the square
-    /// root of the rounded key would lose short distances (`√(2⁻¹⁶)` is 2⁻⁸). In `f32` it is
+    /// root of the rounded key would lose short distances (`√(2⁻¹⁶)` is 2⁻⁸). In floats it is
     /// the root of the key, which is `norm`'s sum of squares in its order, bit for bit.
     #[inline]
     fn distance(&self, metric: Metric, i: usize) -> R {
         match metric {
-            Metric::Euclidean if R::BINARY32 => self.keys[i].sqrt(),
+            Metric::Euclidean if R::FLOAT => self.keys[i].sqrt(),
             Metric::Euclidean => R::norm(self.offsets[i]),
             _ => self.keys[i],
         }
@@ -574,11 +574,14 @@ impl Cellular {
     /// Out of line, and with the metric a value rather than a type parameter: one copy per
     /// number type and dimension however many entry points (point, batch, gradient,
     /// description) and metrics reach it. Compiled once per metric it was 6% faster on
-    /// x86-64 (in 2D) but cost the demo's wasm module 7 KB, past its budget. Inlined on
-    /// x86-64, where size matters less: 13 instructions fewer per 2D sample (the call, and
-    /// the result returned through memory).
+    /// x86-64 (in 2D) but cost the demo's wasm module 7 KB, past its budget. On x86-64, where
+    /// size matters less, it is inlined into [`value`](Self::value) and
+    /// [`value_and_gradient`](Self::value_and_gradient), which are out of line instead: the
+    /// search's result stays in registers (35 instructions fewer per 2D sample, 114 in 3D,
+    /// than a call to the search, whose result returns through memory), and the copies are still one per
+    /// number type, dimension and output (value, or value and gradient).
     #[cfg_attr(not(target_arch = "x86_64"), inline(never))]
-    #[cfg_attr(target_arch = "x86_64", inline)]
+    #[cfg_attr(target_arch = "x86_64", inline(always))]
     fn search<R: Real, const D: usize>(&self, p: [R; D]) -> Nearest<R, D> {
         self.search_in(p, (D == 2 || D == 3) && !PRUNE_NEAR)
     }
@@ -863,6 +866,20 @@ impl<R: Real, const D: usize> Nearest<R, D> {
 }
 
 impl Cellular {
+    /// The value at `p` (out of line on x86-64, see [`search`](Self::search)).
+    #[cfg_attr(target_arch = "x86_64", inline(never))]
+    #[cfg_attr(not(target_arch = "x86_64"), inline)]
+    fn value<R: Real, const D: usize>(&self, p: [R; D]) -> R {
+        self.evaluate::<R, D, false>(p).0
+    }
+
+    /// The value and gradient at `p` (out of line on x86-64, see [`search`](Self::search)).
+    #[cfg_attr(target_arch = "x86_64", inline(never))]
+    #[cfg_attr(not(target_arch = "x86_64"), inline)]
+    fn value_and_gradient<R: Real, const D: usize>(&self, p: [R; D]) -> (R, [R; D]) {
+        self.evaluate::<R, D, true>(p)
+    }
+
     /// The value and, where `GRADIENT`, the gradient at `p`.
     #[inline]
     fn evaluate<R: Real, const D: usize, const GRADIENT: bool>(&self, p: [R; D]) -> (R, [R; D]) {
@@ -896,7 +913,7 @@ macro_rules! cellular_impls {
         impl<R: Real> crate::Noise<R, $d> for Cellular {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
-                self.evaluate::<R, $d, false>(p).0
+                self.value::<R, $d>(p)
             }
             fn amplitude_bound(&self) -> f32 {
                 match self.output {
@@ -909,7 +926,7 @@ macro_rules! cellular_impls {
         impl<R: Real> crate::NoiseGradient<R, $d> for Cellular {
             #[inline]
             fn sample_with_gradient(&self, p: [R; $d]) -> (R, [R; $d]) {
-                self.evaluate::<R, $d, true>(p)
+                self.value_and_gradient::<R, $d>(p)
             }
         }
     )*};
@@ -922,6 +939,7 @@ crate::noise::inherent_amplitude_bound!(Cellular, []);
 mod tests {
     use super::*;
     use crate::I16F16;
+    use crate::testing::chi2;
 
     /// `NEAR_INDEX[d − 1]` is `near_order(d)` as indices whose base-3 digits, axis 0 the most
     /// significant, are the offsets plus 1 (the near table's order is what resolves ties
@@ -947,7 +965,7 @@ mod tests {
     /// Rings 0 and 1 searched whole give what the pruned walk gives, bit for bit (keys,
     /// offsets and the nearest cell's hash; with only `F1` sought, the second key may differ
     /// and is not compared), for every metric, output and several jitters, in f32, f64 and
-    /// I16F16, at random points and at points on cell borders; and in f32 the Euclidean
+    /// I16F16, at random points and at points on cell borders; and in floats the Euclidean
     /// keys' roots are the offsets' norms (`Nearest::distance`).
     #[test]
     fn whole_search_is_the_pruned_search() {
@@ -958,8 +976,8 @@ mod tests {
             assert_eq!(a.keys[..n], b.keys[..n], "{noise:?} at {p:?}");
             assert_eq!(a.offsets[..n], b.offsets[..n], "{noise:?} at {p:?}");
             assert_eq!(a.hash, b.hash, "{noise:?} at {p:?}");
-            // `distance`'s shortcut: in f32 the key's root is the offset's norm.
-            if noise.metric == Metric::Euclidean && R::BINARY32 {
+            // `distance`'s shortcut: in floats the key's root is the offset's norm.
+            if noise.metric == Metric::Euclidean && R::FLOAT {
                 for i in 0..n {
                     assert_eq!(
                         a.keys[i].sqrt(),
@@ -1010,11 +1028,6 @@ mod tests {
     #[test]
     fn points_and_values_are_uniform_and_independent() {
         extern crate std;
-        fn chi2(counts: &[u32]) -> f64 {
-            let total: u32 = counts.iter().sum();
-            let e = f64::from(total) / counts.len() as f64;
-            counts.iter().map(|&c| (f64::from(c) - e).powi(2) / e).sum()
-        }
         fn check<const D: usize>(noise: &Cellular) {
             // The point's bin (4 × 4 over axes 0 and 1) and the value's top 4 bits.
             let bins = |c: [i32; D]| {

@@ -82,9 +82,10 @@
 //!   never a panic (see [`Noise`]).
 //! * `f32` and `f64` results use only IEEE `+ − × ÷` (and `libm` where more is needed), so they
 //!   are bit-identical on every target; fixed point is integer arithmetic and bit-identical
-//!   everywhere. Where a target has a hand-vectorised kernel (Perlin 2D/3D/4D in `f32` on x86-64
-//!   with SSE2 and in WebAssembly with `simd128`; all of them in one module, chosen by `cfg`), it performs the same operations in the
-//!   same order: the values are the same.
+//!   everywhere. Where a target has a hand-vectorised kernel (in `f32`: Perlin 2D/3D/4D on
+//!   x86-64 with SSE2 and in WebAssembly with `simd128`, simplex corners and cellular noise's
+//!   near cells on x86-64; all of them in one module, `arch`, chosen by `cfg`), it performs
+//!   the same operations in the same order: the values are the same.
 #![no_std]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -105,6 +106,8 @@ mod real;
 pub mod simplex;
 pub mod spec;
 mod special;
+#[cfg(test)]
+mod testing;
 pub mod texture;
 pub mod vector;
 pub mod wavelet;

@@ -33,6 +33,10 @@ pub(crate) mod sealed {
         /// constant says its samples are `f32` (then [`Real::to_f32`](crate::Real::to_f32) and
         /// [`Real::from_f32`](crate::Real::from_f32) are the identity).
         const BINARY32: bool;
+        /// Whether the type is an IEEE binary float (`f32`, `f64`): each operation correctly
+        /// rounded, so [`norm`](Self::norm) is the root of the squares summed in axis order,
+        /// bit for bit whoever sums them in that order.
+        const FLOAT: bool;
         /// `self · unit` for `unit` ∈ {−1, 0, 1}, exact (up to the sign of a zero), for gradient
         /// components read from a table. Floats multiply where there is an FPU (one instruction
         /// that reads the unit from the table) and flip or clear the sign bits where floats are
@@ -95,6 +99,7 @@ pub(crate) mod sealed {
         ($t:ty, $bits:ty, $binary32:expr) => {
             impl Sealed for $t {
                 const BINARY32: bool = $binary32;
+                const FLOAT: bool = true;
                 #[inline]
                 fn mul_unit(self, unit: Self) -> Self {
                     if SOFT_FLOAT {
@@ -163,6 +168,7 @@ pub(crate) mod sealed {
     mul_unit_float!(f64, u64, false);
     impl Sealed for I16F16 {
         const BINARY32: bool = false;
+        const FLOAT: bool = false;
         #[inline]
         fn mul_unit(self, unit: Self) -> Self {
             // unit's bits are ±2^16 or 0: `>> 16` gives ±1 or 0. The kernels pass fractions in

@@ -179,13 +179,7 @@ mod tests {
             -2.5,
             7.25,
         ];
-        let mut state = 0x9E37_79B9u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state
-        };
+        let mut next = crate::testing::xorshift32(0x9E37_79B9);
         fn check<const D: usize>(p: [f32; D]) {
             let within = p.iter().all(|x| x.abs() < 4_194_304.0);
             match super::split_point(p) {
@@ -243,15 +237,10 @@ mod tests {
             1e-30,
             1e30,
         ];
-        let mut state = 0x2545_F491u32;
+        let mut next = crate::testing::xorshift32(0x2545_F491);
         let mut batches = vec![edges];
         for _ in 0..65_536 {
-            batches.push(core::array::from_fn(|_| {
-                state ^= state << 13;
-                state ^= state >> 17;
-                state ^= state << 5;
-                f32::from_bits(state)
-            }));
+            batches.push(core::array::from_fn(|_| f32::from_bits(next())));
         }
         for x in batches {
             let mut lanes: [f32; LANES] = x;

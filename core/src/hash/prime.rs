@@ -68,14 +68,8 @@ impl PrimeHash {
 mod tests {
     extern crate std;
     use super::PrimeHash;
+    use crate::testing::chi2;
     use std::println;
-
-    /// Pearson's χ² of `counts` against equal expectations.
-    fn chi2(counts: &[u32]) -> f64 {
-        let total: u32 = counts.iter().sum();
-        let e = f64::from(total) / counts.len() as f64;
-        counts.iter().map(|&c| (f64::from(c) - e).powi(2) / e).sum()
-    }
 
     /// The gradient index a simplex corner reads (the top 4 bits) is uniform over cells, and
     /// independent of its neighbours' along each axis and the diagonal, in 2D and 3D and for

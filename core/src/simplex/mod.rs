@@ -558,13 +558,7 @@ mod tests {
             }
             true
         }
-        let mut state = 0x9E37_79B9u32;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 17;
-            state ^= state << 5;
-            state
-        };
+        let mut next = crate::testing::xorshift32(0x9E37_79B9);
         let specials = [
             0.0,
             -0.0,
