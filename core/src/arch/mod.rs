@@ -66,6 +66,11 @@ pub(crate) use perlin_point::{
 //   gradients) over 16 `f32` lanes from their skewed cells and fractions, bit-identical to the
 //   portable body; `false` where the target has no kernel or not for this dimension.
 pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sqrt_lanes};
+// * `SIMPLEX_POINT`: whether this target has `simplex_point`.
+// * `simplex_point(cell, offset, k)`: simplex noise (Perlin's gradients) at one `f32` point,
+//   2D and 3D, from its skewed cell and fractions, its corners as lanes, bit-identical to the
+//   portable body; `None` where the target has no kernel or not for this dimension.
+pub(crate) use selected::{SIMPLEX_POINT, simplex_point};
 // * `CELLULAR_NEAR`: whether this target has `cellular_near`.
 // * `cellular_near(p, k, out)`: cellular noise's point split and its 3ᴰ near cells
 //   (`Cellular::near_whole`) in `f32`, 2D and 3D, in near order as lanes, and the nearest and
@@ -141,6 +146,26 @@ pub(crate) struct SimplexLanes<'a, const D: usize> {
     pub(crate) unskew: f32,
     /// `j·G` for the corners `j = 0 … D`.
     pub(crate) diagonal: [f32; 5],
+    /// The scale that makes the largest value 1.
+    pub(crate) scale: f32,
+}
+
+/// The constants of [`simplex_point`] for one dimension and seed, in `f32` (computed by the
+/// portable code).
+#[cfg_attr(
+    not(all(target_arch = "x86_64", target_feature = "sse2")),
+    allow(
+        dead_code,
+        reason = "only the x86-64 kernel reads the constants; the others decline"
+    )
+)]
+pub(crate) struct SimplexPoint {
+    /// The corner hash's start (the mixed seed).
+    pub(crate) start: u32,
+    /// The unskew `G`.
+    pub(crate) unskew: f32,
+    /// `j·G` for the corners `j = 0 … D` (0 beyond).
+    pub(crate) diagonal: [f32; 4],
     /// The scale that makes the largest value 1.
     pub(crate) scale: f32,
 }

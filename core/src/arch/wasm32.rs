@@ -153,6 +153,18 @@ pub(crate) fn simplex_corners<const D: usize>(
     false
 }
 
+/// No simplex point kernel: the portable body runs.
+pub(crate) const SIMPLEX_POINT: bool = false;
+
+#[inline]
+pub(crate) fn simplex_point<const D: usize>(
+    _: [i32; D],
+    _: [f32; D],
+    _: &super::SimplexPoint,
+) -> Option<f32> {
+    None
+}
+
 /// No cellular near-cell kernel: the portable body runs.
 pub(crate) const CELLULAR_NEAR: bool = false;
 

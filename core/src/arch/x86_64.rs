@@ -178,7 +178,6 @@ pub(crate) fn simplex_corners<const D: usize>(
     let one = set_splat_m128(1.0);
     let prime: [m128i; D] =
         core::array::from_fn(|a| set_splat_i32_m128i(PrimeHash::PRIMES[a & 3] as i32));
-    let multiplier = set_splat_i32_m128i(PrimeHash::MULTIPLIER as i32);
     for (group, out) in value.chunks_exact_mut(4).enumerate() {
         let at = 4 * group;
         let lanes = |x: &[f32; crate::batch::LANES]| {
@@ -233,35 +232,110 @@ pub(crate) fn simplex_corners<const D: usize>(
                 q = add_m128(q, mul_m128(x, x));
                 h = bitxor_m128i(h, add_i32_m128i(term[a], bitand_m128i(step, prime[a])));
             }
-            let t = sub_m128(sub_m128(one, q), q);
-            // maxps gives its second operand unless the first is greater: `t > 0 ? t : 0`.
-            let tau = max_m128(t, zero);
-            let b = shr_imm_u32_m128i::<28>(mul_u32(h, multiplier));
-            // Perlin's grad: ±u ± v, u = b < 8 ? x : y, v = b < 4 ? y : (b is 12 or 14 ? x : z).
-            let (x, y) = (d[0], d[1 % D]);
-            let z = if D == 3 { d[2 % D] } else { zero };
-            let below =
-                |n: i32| cast_to_m128_from_m128i(cmp_lt_mask_i32_m128i(b, set_splat_i32_m128i(n)));
-            let twelve_or_fourteen = cast_to_m128_from_m128i(cmp_eq_mask_i32_m128i(
-                bitor_m128i(b, set_splat_i32_m128i(2)),
-                set_splat_i32_m128i(14),
-            ));
-            let u = select(below(8), x, y);
-            let v = select(below(4), y, select(twelve_or_fourteen, x, z));
-            // The signs from bits 0 and 1, moved to the sign bit.
-            let sign_u = cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(b));
-            let sign_v =
-                cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(shr_imm_u32_m128i::<1>(b)));
-            let dot = add_m128(bitxor_m128(u, sign_u), bitxor_m128(v, sign_v));
-            let tau2 = mul_m128(tau, tau);
-            let tau4 = mul_m128(tau2, tau2);
-            total = add_m128(total, mul_m128(tau4, dot));
+            total = add_m128(total, corner_contribution(d, q, h));
         }
         // The scale, then `+ 0` (`Real::canonical`: −0 to +0).
         let v = add_m128(mul_m128(total, set_splat_m128(k.scale)), zero);
         out.copy_from_slice(&v.to_array());
     }
     true
+}
+
+/// A simplex corner's `τ⁴ (g·d)` in each lane (`simplex::simplex`'s per-corner step) from
+/// its offset `d`, the offset's squared length `q` summed in axis order, and its folded hash
+/// `h`: `τ = max(1 − q − q, 0)`, the gradient chosen by the finished hash's top 4 bits and
+/// applied as Perlin's `grad`, signed offsets picked by masks.
+#[inline(always)]
+fn corner_contribution<const D: usize>(d: [m128; D], q: m128, h: m128i) -> m128 {
+    use crate::hash::prime::PrimeHash;
+    let zero = zeroed_m128();
+    let t = sub_m128(sub_m128(set_splat_m128(1.0), q), q);
+    // maxps gives its second operand unless the first is greater: `t > 0 ? t : 0`.
+    let tau = max_m128(t, zero);
+    let b = shr_imm_u32_m128i::<28>(mul_u32(
+        h,
+        set_splat_i32_m128i(PrimeHash::MULTIPLIER as i32),
+    ));
+    // Perlin's grad: ±u ± v, u = b < 8 ? x : y, v = b < 4 ? y : (b is 12 or 14 ? x : z).
+    let (x, y) = (d[0], d[1 % D]);
+    let z = if D == 3 { d[2 % D] } else { zero };
+    let below = |n: i32| cast_to_m128_from_m128i(cmp_lt_mask_i32_m128i(b, set_splat_i32_m128i(n)));
+    let twelve_or_fourteen = cast_to_m128_from_m128i(cmp_eq_mask_i32_m128i(
+        bitor_m128i(b, set_splat_i32_m128i(2)),
+        set_splat_i32_m128i(14),
+    ));
+    let u = select(below(8), x, y);
+    let v = select(below(4), y, select(twelve_or_fourteen, x, z));
+    // The signs from bits 0 and 1, moved to the sign bit.
+    let sign_u = cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(b));
+    let sign_v = cast_to_m128_from_m128i(shl_imm_u32_m128i::<31>(shr_imm_u32_m128i::<1>(b)));
+    let dot = add_m128(bitxor_m128(u, sign_u), bitxor_m128(v, sign_v));
+    let tau2 = mul_m128(tau, tau);
+    let tau4 = mul_m128(tau2, tau2);
+    mul_m128(tau4, dot)
+}
+
+/// This target has [`simplex_point`] (2D and 3D).
+pub(crate) const SIMPLEX_POINT: bool = true;
+
+/// Simplex noise at one point in `f32` with Perlin's gradients, 2D and 3D, from its skewed
+/// cell and the fractions of its skewed coordinates (`simplex::simplex` with one lane: the
+/// same operations on the same numbers, so the same bits; a test compares them): the ranks
+/// and the unskewed offset by scalar operations, then the `D + 1` corners as the lanes of
+/// one vector (offset, hash, `τ⁴ (g·d)`), summed in corner order, then the scale. The
+/// corners' chains run side by side instead of one after another. `None` in other
+/// dimensions.
+#[inline]
+pub(crate) fn simplex_point<const D: usize>(
+    cell: [i32; D],
+    offset: [f32; D],
+    k: &super::SimplexPoint,
+) -> Option<f32> {
+    use crate::hash::prime::PrimeHash;
+    if D != 2 && D != 3 {
+        return None;
+    }
+    // Gustavson's ranks: +1 for each axis whose fraction this one's exceeds.
+    let mut rank = [0i32; D];
+    for a in 0..D {
+        for b in a + 1..D {
+            let greater = i32::from(offset[a] > offset[b]);
+            rank[a] += greater;
+            rank[b] += 1 - greater;
+        }
+    }
+    let mut sum = 0.0f32;
+    for o in offset {
+        sum += o;
+    }
+    let back = sum * k.unskew;
+    // Lane j is corner j: axis a is stepped there when rank + j ≥ D.
+    let corner = m128i::from([0, 1, 2, 3]);
+    let diagonal = m128::from_array(k.diagonal);
+    let one = set_splat_m128(1.0);
+    let mut q = zeroed_m128();
+    let mut h = set_splat_i32_m128i(k.start as i32);
+    let d: [m128; D] = core::array::from_fn(|a| {
+        let step = cmp_gt_mask_i32_m128i(
+            add_i32_m128i(set_splat_i32_m128i(rank[a]), corner),
+            set_splat_i32_m128i(D as i32 - 1),
+        );
+        // x − 1 where stepped, else x − 0 = x exactly: the same bits as a select.
+        let x = add_m128(set_splat_m128(offset[a] - back), diagonal);
+        let x = sub_m128(x, bitand_m128(cast_to_m128_from_m128i(step), one));
+        q = add_m128(q, mul_m128(x, x));
+        let prime = set_splat_i32_m128i(PrimeHash::PRIMES[a & 3] as i32);
+        let term = set_splat_i32_m128i(PrimeHash::axis(a, cell[a]) as i32);
+        h = bitxor_m128i(h, add_i32_m128i(term, bitand_m128i(step, prime)));
+        x
+    });
+    let contribution = corner_contribution(d, q, h).to_array();
+    let mut total = 0.0f32;
+    for c in &contribution[..=D] {
+        total += c;
+    }
+    // The scale, then `+ 0` (`Real::canonical`: −0 to +0).
+    Some(total * k.scale + 0.0)
 }
 
 /// This target has [`cellular_near`] (2D and 3D).

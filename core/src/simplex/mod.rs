@@ -484,11 +484,41 @@ fn corners_kernel<R: Real, const D: usize>(
     true
 }
 
+/// A point through the target's point kernel ([`arch::simplex_point`], `f32` in 2D and 3D
+/// on x86-64): the skew here, the corners there, the same bits as [`simplex`]. `None` where
+/// there is none.
+#[inline(always)]
+fn point_kernel<R: Real, const D: usize>(hash: &PrimeHash, p: [R; D]) -> Option<R> {
+    if !arch::SIMPLEX_POINT || !R::BINARY32 || !(D == 2 || D == 3) {
+        return None;
+    }
+    let mut cell = [[0i32; 1]; D];
+    let mut offset = [[R::ZERO; 1]; D];
+    skew(&p.map(|x| [x]), &mut cell, &mut offset);
+    let k = arch::SimplexPoint {
+        start: hash.start(),
+        unskew: R::from_ratio(UNSKEW[D], 31).to_f32(),
+        // j·G < 2³¹ for j ≤ D (the corners); the rest is unused.
+        diagonal: core::array::from_fn(|j| {
+            if j <= D {
+                R::from_ratio(UNSKEW[D] * j as i32, 31).to_f32()
+            } else {
+                0.0
+            }
+        }),
+        scale: R::from_ratio(SCALE[D], 16).to_f32(),
+    };
+    arch::simplex_point(cell.map(|c| c[0]), offset.map(|o| o[0].to_f32()), &k).map(R::from_f32)
+}
+
 macro_rules! simplex_impls {
     ($($d:literal),*) => {$(
         impl<R: Real> crate::Noise<R, $d> for Simplex {
             #[inline]
             fn sample(&self, p: [R; $d]) -> R {
+                if let Some(v) = point_kernel(&self.hash, p) {
+                    return v;
+                }
                 let (mut value, mut gradient) = ([R::ZERO], [[R::ZERO]; $d]);
                 let p = p.map(|x| [x]);
                 simplex::<R, _, $d, 1, false>(&self.hash, &PerlinGradients, SCALE[$d], &p, &mut value, &mut gradient);
@@ -523,14 +553,42 @@ crate::noise::inherent_amplitude_bound!(Simplex, []);
 
 #[cfg(test)]
 mod tests {
-    use super::{LANES, PerlinGradients, SCALE, corners_kernel, simplex};
+    use super::{LANES, PerlinGradients, SCALE, corners_kernel, point_kernel, simplex};
     use crate::hash::prime::PrimeHash;
 
-    /// The target's corner kernel (where there is one) gives the portable body's bits over
-    /// 16 lanes: random points near and far from the origin, points on cell and simplex
-    /// faces, and non-finite coordinates, 2D and 3D, several seeds.
+    /// The target's corner kernel and point kernel (where there are) give the portable body's
+    /// bits, over 16 lanes and at each of their points: random points near and far from the
+    /// origin, points on cell and simplex faces, and non-finite coordinates, 2D and 3D,
+    /// several seeds.
     #[test]
-    fn corner_kernel_is_the_body() {
+    fn corner_and_point_kernels_are_the_body() {
+        /// Whether the point kernel ran.
+        fn points<const D: usize>(hash: &PrimeHash, p: &[[f32; LANES]; D]) -> bool {
+            let mut ran = false;
+            let lanes = (0..LANES).map(|l| -> [f32; D] { core::array::from_fn(|a| p[a][l]) });
+            for point in lanes {
+                let (mut want, mut gradient) = ([0.0f32], [[0.0f32]; D]);
+                let lane = point.map(|x| [x]);
+                simplex::<f32, _, D, 1, false>(
+                    hash,
+                    &PerlinGradients,
+                    SCALE[D],
+                    &lane,
+                    &mut want,
+                    &mut gradient,
+                );
+                if let Some(got) = point_kernel(hash, point) {
+                    assert_eq!(
+                        got.to_bits(),
+                        want[0].to_bits(),
+                        "{point:?}: {got} {}",
+                        want[0]
+                    );
+                    ran = true;
+                }
+            }
+            ran
+        }
         fn check<const D: usize>(hash: &PrimeHash, p: &[[f32; LANES]; D]) -> bool {
             let mut want = [0.0f32; LANES];
             let mut gradient = [[0.0f32; LANES]; D];
@@ -574,7 +632,7 @@ mod tests {
             f32::INFINITY,
             f32::NEG_INFINITY,
         ];
-        let mut ran = false;
+        let (mut ran, mut ran_points) = (false, false);
         for seed in [0, 1, 77, u32::MAX] {
             let hash = PrimeHash::new(seed);
             for round in 0..4000 {
@@ -595,9 +653,12 @@ mod tests {
                     core::array::from_fn(|_| core::array::from_fn(&mut coordinate));
                 ran |= check(&hash, &p2);
                 ran |= check(&hash, &p3);
+                ran_points |= points(&hash, &p2);
+                ran_points |= points(&hash, &p3);
             }
         }
-        // Where the target has the kernel, it ran.
+        // Where the target has the kernels, they ran.
         assert_eq!(ran, crate::arch::SIMPLEX_CORNERS);
+        assert_eq!(ran_points, crate::arch::SIMPLEX_POINT);
     }
 }
