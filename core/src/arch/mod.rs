@@ -67,8 +67,8 @@ pub(crate) use perlin_point::{
 //   portable body; `false` where the target has no kernel or not for this dimension.
 pub(crate) use selected::{OCTAVES_AS_LANES, SIMPLEX_CORNERS, simplex_corners, sqrt_lanes};
 // * `SIMPLEX_POINT`: whether this target has `simplex_point`.
-// * `simplex_point(cell, offset, k)`: simplex noise (Perlin's gradients) at one `f32` point,
-//   2D and 3D, from its skewed cell and fractions, its corners as lanes, bit-identical to the
+// * `simplex_point(cell, offset, k)`: simplex noise (Perlin's gradients) at one `f32` point in
+//   3D from its skewed cell and fractions, its corners as lanes, bit-identical to the
 //   portable body; `None` where the target has no kernel or not for this dimension.
 pub(crate) use selected::{SIMPLEX_POINT, simplex_point};
 // * `CELLULAR_NEAR`: whether this target has `cellular_near`.

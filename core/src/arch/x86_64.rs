@@ -275,16 +275,17 @@ fn corner_contribution<const D: usize>(d: [m128; D], q: m128, h: m128i) -> m128 
     mul_m128(tau4, dot)
 }
 
-/// This target has [`simplex_point`] (2D and 3D).
+/// This target has [`simplex_point`] (3D).
 pub(crate) const SIMPLEX_POINT: bool = true;
 
-/// Simplex noise at one point in `f32` with Perlin's gradients, 2D and 3D, from its skewed
-/// cell and the fractions of its skewed coordinates (`simplex::simplex` with one lane: the
-/// same operations on the same numbers, so the same bits; a test compares them): the ranks
-/// and the unskewed offset by scalar operations, then the `D + 1` corners as the lanes of
-/// one vector (offset, hash, `τ⁴ (g·d)`), summed in corner order, then the scale. The
-/// corners' chains run side by side instead of one after another. `None` in other
-/// dimensions.
+/// Simplex noise at one point in `f32` with Perlin's gradients, 3D, from its skewed cell and
+/// the fractions of its skewed coordinates (`simplex::simplex` with one lane: the same
+/// operations on the same numbers, so the same bits; a test compares them): the ranks and
+/// the unskewed offset by scalar operations, then the 4 corners as the lanes of one vector
+/// (offset, hash, `τ⁴ (g·d)`), summed in corner order, then the scale. The corners' chains
+/// run side by side instead of one after another (`bench/README.md`: 3D 270 → 226
+/// instructions per sample; in 2D, 3 corners in 4 lanes, 172 → 176 and no faster, so 2D
+/// keeps the portable body). `None` in other dimensions.
 #[inline]
 pub(crate) fn simplex_point<const D: usize>(
     cell: [i32; D],
@@ -292,7 +293,7 @@ pub(crate) fn simplex_point<const D: usize>(
     k: &super::SimplexPoint,
 ) -> Option<f32> {
     use crate::hash::prime::PrimeHash;
-    if D != 2 && D != 3 {
+    if D != 3 {
         return None;
     }
     // Gustavson's ranks: +1 for each axis whose fraction this one's exceeds.

@@ -484,12 +484,12 @@ fn corners_kernel<R: Real, const D: usize>(
     true
 }
 
-/// A point through the target's point kernel ([`arch::simplex_point`], `f32` in 2D and 3D
-/// on x86-64): the skew here, the corners there, the same bits as [`simplex`]. `None` where
+/// A point through the target's point kernel ([`arch::simplex_point`], `f32` in 3D on
+/// x86-64): the skew here, the corners there, the same bits as [`simplex`]. `None` where
 /// there is none.
 #[inline(always)]
 fn point_kernel<R: Real, const D: usize>(hash: &PrimeHash, p: [R; D]) -> Option<R> {
-    if !arch::SIMPLEX_POINT || !R::BINARY32 || !(D == 2 || D == 3) {
+    if !arch::SIMPLEX_POINT || !R::BINARY32 || D != 3 {
         return None;
     }
     let mut cell = [[0i32; 1]; D];
