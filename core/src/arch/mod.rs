@@ -140,18 +140,12 @@ pub(crate) struct SimplexLanes<'a, const D: usize> {
     pub(crate) cell: &'a [[i32; crate::batch::LANES]; D],
     /// Each axis's fraction in the skewed cell.
     pub(crate) offset: &'a [[f32; crate::batch::LANES]; D],
-    /// The corner hash's start (the mixed seed).
-    pub(crate) start: u32,
-    /// The unskew `G`.
-    pub(crate) unskew: f32,
-    /// `j·G` for the corners `j = 0 … D`.
-    pub(crate) diagonal: [f32; 5],
-    /// The scale that makes the largest value 1.
-    pub(crate) scale: f32,
+    /// The body's constants.
+    pub(crate) constants: SimplexConstants,
 }
 
-/// The constants of [`simplex_point`] for one dimension and seed, in `f32` (computed by the
-/// portable code).
+/// The constants of [`simplex_corners`] and [`simplex_point`] for one dimension and seed, in
+/// `f32` (computed by the portable code).
 #[cfg_attr(
     not(all(target_arch = "x86_64", target_feature = "sse2")),
     allow(
@@ -159,13 +153,13 @@ pub(crate) struct SimplexLanes<'a, const D: usize> {
         reason = "only the x86-64 kernel reads the constants; the others decline"
     )
 )]
-pub(crate) struct SimplexPoint {
+pub(crate) struct SimplexConstants {
     /// The corner hash's start (the mixed seed).
     pub(crate) start: u32,
     /// The unskew `G`.
     pub(crate) unskew: f32,
     /// `j·G` for the corners `j = 0 … D` (0 beyond).
-    pub(crate) diagonal: [f32; 4],
+    pub(crate) diagonal: [f32; 5],
     /// The scale that makes the largest value 1.
     pub(crate) scale: f32,
 }

@@ -73,7 +73,7 @@ pub(crate) const SIMPLEX_POINT: bool = false;
 pub(crate) fn simplex_point<const D: usize>(
     _: [i32; D],
     _: [f32; D],
-    _: &super::SimplexPoint,
+    _: &super::SimplexConstants,
 ) -> Option<f32> {
     None
 }

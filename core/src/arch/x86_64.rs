@@ -197,7 +197,7 @@ pub(crate) fn simplex_corners<const D: usize>(
         for o in &offset {
             sum = add_m128(sum, *o);
         }
-        let back = mul_m128(sum, set_splat_m128(k.unskew));
+        let back = mul_m128(sum, set_splat_m128(k.constants.unskew));
         let first: [m128; D] = core::array::from_fn(|a| sub_m128(offset[a], back));
         let term: [m128i; D] = core::array::from_fn(|a| {
             let c = &k.cell[a];
@@ -208,9 +208,9 @@ pub(crate) fn simplex_corners<const D: usize>(
         });
         let mut total = zero;
         for j in 0..=D {
-            let diagonal = set_splat_m128(k.diagonal[j]);
+            let diagonal = set_splat_m128(k.constants.diagonal[j]);
             let mut q = zero;
-            let mut h = set_splat_i32_m128i(k.start as i32);
+            let mut h = set_splat_i32_m128i(k.constants.start as i32);
             let mut d = [zero; D];
             for a in 0..D {
                 // Axis a is stepped at corner j when rank + j ≥ D: never at the first corner,
@@ -235,7 +235,7 @@ pub(crate) fn simplex_corners<const D: usize>(
             total = add_m128(total, corner_contribution(d, q, h));
         }
         // The scale, then `+ 0` (`Real::canonical`: −0 to +0).
-        let v = add_m128(mul_m128(total, set_splat_m128(k.scale)), zero);
+        let v = add_m128(mul_m128(total, set_splat_m128(k.constants.scale)), zero);
         out.copy_from_slice(&v.to_array());
     }
     true
@@ -283,14 +283,14 @@ pub(crate) const SIMPLEX_POINT: bool = true;
 /// operations on the same numbers, so the same bits; a test compares them): the ranks and
 /// the unskewed offset by scalar operations, then the 4 corners as the lanes of one vector
 /// (offset, hash, `τ⁴ (g·d)`), summed in corner order, then the scale. The corners' chains
-/// run side by side instead of one after another (`bench/README.md`: 3D 270 → 226
+/// run side by side instead of one after another (`bench/README.md`: 3D 270 → 229
 /// instructions per sample; in 2D, 3 corners in 4 lanes, 172 → 176 and no faster, so 2D
 /// keeps the portable body). `None` in other dimensions.
 #[inline]
 pub(crate) fn simplex_point<const D: usize>(
     cell: [i32; D],
     offset: [f32; D],
-    k: &super::SimplexPoint,
+    k: &super::SimplexConstants,
 ) -> Option<f32> {
     use crate::hash::prime::PrimeHash;
     if D != 3 {
@@ -312,7 +312,8 @@ pub(crate) fn simplex_point<const D: usize>(
     let back = sum * k.unskew;
     // Lane j is corner j: axis a is stepped there when rank + j ≥ D.
     let corner = m128i::from([0, 1, 2, 3]);
-    let diagonal = m128::from_array(k.diagonal);
+    let [d0, d1, d2, d3, _] = k.diagonal;
+    let diagonal = m128::from_array([d0, d1, d2, d3]);
     let one = set_splat_m128(1.0);
     let mut q = zeroed_m128();
     let mut h = set_splat_i32_m128i(k.start as i32);

@@ -464,17 +464,7 @@ fn corners_kernel<R: Real, const D: usize>(
     let lanes = arch::SimplexLanes {
         cell: &cell,
         offset: &offset,
-        start: hash.start(),
-        unskew: R::from_ratio(UNSKEW[D], 31).to_f32(),
-        // j·G < 2³¹ for j ≤ D (the corners); the rest is unused.
-        diagonal: core::array::from_fn(|j| {
-            if j <= D {
-                R::from_ratio(UNSKEW[D] * j as i32, 31).to_f32()
-            } else {
-                0.0
-            }
-        }),
-        scale: R::from_ratio(SCALE[D], 16).to_f32(),
+        constants: kernel_constants::<R, D>(hash),
     };
     let mut value = [0.0f32; LANES];
     if !arch::simplex_corners(&lanes, &mut value) {
@@ -495,7 +485,14 @@ fn point_kernel<R: Real, const D: usize>(hash: &PrimeHash, p: [R; D]) -> Option<
     let mut cell = [[0i32; 1]; D];
     let mut offset = [[R::ZERO; 1]; D];
     skew(&p.map(|x| [x]), &mut cell, &mut offset);
-    let k = arch::SimplexPoint {
+    let k = kernel_constants::<R, D>(hash);
+    arch::simplex_point(cell.map(|c| c[0]), offset.map(|o| o[0].to_f32()), &k).map(R::from_f32)
+}
+
+/// The target kernels' constants in `f32`, as the portable body computes them in `R`.
+#[inline(always)]
+fn kernel_constants<R: Real, const D: usize>(hash: &PrimeHash) -> arch::SimplexConstants {
+    arch::SimplexConstants {
         start: hash.start(),
         unskew: R::from_ratio(UNSKEW[D], 31).to_f32(),
         // j·G < 2³¹ for j ≤ D (the corners); the rest is unused.
@@ -507,8 +504,7 @@ fn point_kernel<R: Real, const D: usize>(hash: &PrimeHash, p: [R; D]) -> Option<
             }
         }),
         scale: R::from_ratio(SCALE[D], 16).to_f32(),
-    };
-    arch::simplex_point(cell.map(|c| c[0]), offset.map(|o| o[0].to_f32()), &k).map(R::from_f32)
+    }
 }
 
 macro_rules! simplex_impls {
