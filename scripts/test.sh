@@ -17,7 +17,11 @@ cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench -p bandnoise-js --target wasm32-unknown-unknown --all-targets -- -D warnings
 
 step "unit, integration and doc tests"
-cargo test --workspace
+# `--tests`: every target with tests, not the examples (clippy above checked that they build);
+# the integration tests are one binary (tests/Cargo.toml) and the crates without unit tests
+# build no test-mode copy (their manifests' `test = false`): CI's longest step.
+cargo test --workspace --tests
+cargo test --workspace --doc
 
 step "API docs build without warnings (broken links, missing docs)"
 RUSTDOCFLAGS="-D warnings" cargo doc -p bandnoise --no-deps
@@ -55,8 +59,11 @@ if [ "$size" -gt 216000 ]; then
     echo "error: the demo's wasm module is $size bytes, over its budget of 216,000 (README, Browser)" >&2
     exit 1
 fi
+step "browser: the demo module's wasm-bindgen tests in Chromium"
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
+step "browser: the demo end to end"
 node tests/e2e/demo.test.mjs
+step "browser: the npm package"
 # The npm package: its SIMD point kernel equals the portable one (Node), then the package packed,
 # installed into an empty folder, used from Node, TypeScript and Chromium.
 cargo test -p bandnoise-js --target wasm32-unknown-unknown --test kernel
@@ -96,6 +103,7 @@ fi
     cargo build --release -p firmware-cortex-m --bin nopanic-spec --target thumbv7em-none-eabihf
     cargo build --release -p firmware-cortex-m --bin nopanic-text --target thumbv7em-none-eabihf
 )
+step "firmware: instructions per sample and footprint"
 bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
 
 step "fuzzing: every target for 20 s (pinned nightly, cargo-fuzz)"
@@ -103,6 +111,7 @@ rustup toolchain install nightly-2026-05-20 --profile minimal # instant when pre
 if ! cargo fuzz --version >/dev/null 2>&1; then
     cargo install cargo-fuzz --version 0.13.1
 fi
+step "fuzzing: the targets' runs"
 (
     cd fuzz
     cargo fmt --all -- --check

@@ -61,6 +61,9 @@ use bandnoise::batch::Grid;
 use bandnoise::spec::{Spec, SpecNoise};
 use bandnoise::{Error, I16F16, NoiseGradient, Real};
 
+mod prefix;
+use prefix::Prefix;
+
 /// The wavelet tiles the library is built with.
 #[cfg(not(feature = "small-tiles"))]
 type Tiles = bandnoise::spec::F32Tiles;
@@ -184,57 +187,6 @@ unsafe fn built<'a>(noise: *const bn_noise) -> Result<&'a Built, bn_status> {
     // SAFETY: only `bn_noise_init` writes the marker, together with a valid `Stored` (size and
     // alignment checked above), and it clears the marker before building.
     Ok(unsafe { &(*noise.cast::<Stored>()).built })
-}
-
-/// Writes into a C string buffer the longest prefix of what is printed that fits with its NUL,
-/// cut at a character boundary: after one character did not fit, none after it is written.
-/// [`Prefix::finish`] writes the NUL and says whether everything fitted.
-struct Prefix<'a> {
-    out: &'a mut [c_char],
-    len: usize,
-    full: bool,
-}
-
-impl<'a> Prefix<'a> {
-    fn new(out: &'a mut [c_char]) -> Self {
-        Self {
-            out,
-            len: 0,
-            full: false,
-        }
-    }
-
-    /// Ends the string with its NUL (an empty buffer gets none); `true` if nothing was cut.
-    fn finish(self) -> bool {
-        if let Some(nul) = self.out.get_mut(self.len) {
-            *nul = 0;
-        }
-        !self.full
-    }
-}
-
-impl Write for Prefix<'_> {
-    fn write_str(&mut self, s: &str) -> fmt::Result {
-        for c in s.chars() {
-            let mut utf8 = [0u8; 4];
-            let bytes = c.encode_utf8(&mut utf8).as_bytes();
-            let end = self.len + bytes.len();
-            // The last byte is the NUL's.
-            let room = self.out.len();
-            let slots = match self.out.get_mut(self.len..end) {
-                Some(slots) if !self.full && end < room => slots,
-                _ => {
-                    self.full = true;
-                    return Ok(());
-                }
-            };
-            for (slot, &b) in slots.iter_mut().zip(bytes) {
-                *slot = b as c_char;
-            }
-            self.len = end;
-        }
-        Ok(())
-    }
 }
 
 /// Fills `error` (if not null) with `status`, `position` and the message `what` prints.
@@ -760,42 +712,4 @@ fn panic(_: &core::panic::PanicInfo) -> ! {
     }
     // SAFETY: never linked: a program that reaches this fails to link.
     unsafe { bandnoise_c_has_a_reachable_panic() }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_long_message_is_its_longest_prefix_that_fits() {
-        let mut out = [0x55 as c_char; BN_MESSAGE_BYTES];
-        let mut m = Prefix::new(&mut out);
-        // 509 ASCII bytes and "é" (2 bytes) fill bytes 0..511, leaving the last for the NUL;
-        // "€" (3 bytes) does not fit, and the "x" after it, which would, is not written.
-        let text = format!("{}é€x", "a".repeat(509));
-        write!(m, "{text}").expect("never fails");
-        assert_eq!(m.len, 511);
-        assert!(!m.finish(), "the text was cut");
-        assert_eq!(out[511], 0);
-        let written: Vec<u8> = out[..511].iter().map(|&c| c as u8).collect();
-        assert_eq!(written, format!("{}é", "a".repeat(509)).into_bytes());
-    }
-
-    #[test]
-    fn a_prefix_that_fits_ends_with_its_nul() {
-        let mut out = [0x55 as c_char; 6];
-        let mut m = Prefix::new(&mut out);
-        write!(m, "abcde").expect("never fails");
-        assert!(m.finish());
-        assert_eq!(out.map(|c| c as u8), *b"abcde\0");
-        // One byte more does not fit: the NUL keeps the last byte.
-        let mut m = Prefix::new(&mut out);
-        write!(m, "abcdef").expect("never fails");
-        assert!(!m.finish());
-        assert_eq!(out.map(|c| c as u8), *b"abcde\0");
-        // An empty buffer takes nothing, not even the NUL.
-        let mut m = Prefix::new(&mut []);
-        write!(m, "a").expect("never fails");
-        assert!(!m.finish());
-    }
 }

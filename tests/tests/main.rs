@@ -1,0 +1,31 @@
+//! bandnoise's integration tests, one module per file beside this one, built as one test
+//! binary: one compilation and link of the noises' generic code instead of one per file
+//! (about half the workspace's test build, CI's longest step), and one pool of test threads
+//! over all of them (`cargo test -p bandnoise-tests -- seams::` runs one file's tests).
+
+mod bad_input;
+mod batch;
+mod cellular;
+mod contract;
+mod derivatives;
+mod filtering;
+mod fractal;
+mod gabor;
+mod hash;
+mod levels;
+mod mixed;
+mod opensimplex;
+mod periodic;
+mod projected_variance;
+mod properties;
+mod seams;
+mod simplex;
+mod sparse;
+mod spec;
+mod statistics;
+mod structure;
+mod texture;
+mod vector;
+mod wavelet;
+mod white;
+mod wiener;
