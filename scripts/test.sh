@@ -27,18 +27,19 @@ step "API docs build without warnings (broken links, missing docs)"
 RUSTDOCFLAGS="-D warnings" cargo doc -p bandnoise --no-deps
 
 step "core builds for every target"
-for target in thumbv6m-none-eabi thumbv7em-none-eabihf riscv32imc-unknown-none-elf wasm32-unknown-unknown; do
-    cargo build -p bandnoise --release --target "$target"
-done
+# One build for the four, two at a time on two cores (each is one codegen unit).
+cargo build -p bandnoise --release --target thumbv6m-none-eabi --target thumbv7em-none-eabihf \
+    --target riscv32imc-unknown-none-elf --target wasm32-unknown-unknown
 # The optional serde feature stays no_std and allocation-free.
 cargo build -p bandnoise --release --target thumbv6m-none-eabi --features serde
 
 step "benchmarks compile and run once"
 # `cargo test` runs criterion's benchmarks once each (test mode) in the test profile, whose
 # dependencies the step above built: no second, bench-profile build of everything.
-cargo test -p bandnoise-tests --bench lattice --bench wavelet
-# Against the peer crates (each workload once; the measured run is scripts/bench-peers.sh).
-cargo test -p bandnoise-bench --bench peers --bench spec --bench impulse
+# bandnoise's own (tests/benches) and against the peer crates (bench/benches; each workload
+# once; the measured run is scripts/bench-peers.sh), built side by side in one command.
+cargo test -p bandnoise-tests -p bandnoise-bench \
+    --bench lattice --bench wavelet --bench peers --bench spec --bench impulse
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
@@ -87,6 +88,12 @@ fi
 (
     cd firmware
     cargo fmt --all -- --check
+    # Each program is linked whole (LTO, one codegen unit): built side by side first, two at a
+    # time on two cores, then run one by one.
+    cargo build --profile m0-checks -p firmware-cortex-m --target thumbv6m-none-eabi \
+        --bin checks-fixed --bin checks-fixed-other --bin checks-float --bin checks-float-other
+    cargo build --release -p firmware-cortex-m --target thumbv7em-none-eabihf \
+        --bin checks --bin led --bin nopanic --bin nopanic-spec --bin nopanic-text
     # The Cortex-M0's 256 KiB of flash hold one part of one number type's checksum code at a
     # time (the descriptions, the others), built for size (firmware/Cargo.toml, m0-checks).
     cargo run --profile m0-checks -p firmware-cortex-m --bin checks-fixed --target thumbv6m-none-eabi
