@@ -16,11 +16,16 @@ cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench -p bandnoise-js --target wasm32-unknown-unknown --all-targets -- -D warnings
 
-step "unit, integration and doc tests"
+step "unit, integration and doc tests; benchmarks compile and run once"
 # `--tests`: every target with tests, not the examples (clippy above checked that they build);
 # the integration tests are one binary (tests/Cargo.toml) and the crates without unit tests
-# build no test-mode copy (their manifests' `test = false`): CI's longest step.
-cargo test --workspace --tests
+# build no test-mode copy (their manifests' `test = false`): CI's longest step. The benches,
+# named (`--benches` would add every library and binary again): criterion's benchmarks run once
+# each (test mode), bandnoise's own (tests/benches) and against the peer crates (bench/benches;
+# the measured run is scripts/bench-peers.sh), in the same build (a command of their own
+# resolves other features and rebuilt the crate and its users).
+cargo test --workspace --tests \
+    --bench lattice --bench wavelet --bench peers --bench spec --bench impulse
 cargo test --workspace --doc
 
 step "API docs build without warnings (broken links, missing docs)"
@@ -32,14 +37,6 @@ cargo build -p bandnoise --release --target thumbv6m-none-eabi --target thumbv7e
     --target riscv32imc-unknown-none-elf --target wasm32-unknown-unknown
 # The optional serde feature stays no_std and allocation-free.
 cargo build -p bandnoise --release --target thumbv6m-none-eabi --features serde
-
-step "benchmarks compile and run once"
-# `cargo test` runs criterion's benchmarks once each (test mode) in the test profile, whose
-# dependencies the step above built: no second, bench-profile build of everything.
-# bandnoise's own (tests/benches) and against the peer crates (bench/benches; each workload
-# once; the measured run is scripts/bench-peers.sh), built side by side in one command.
-cargo test -p bandnoise-tests -p bandnoise-bench \
-    --bench lattice --bench wavelet --bench peers --bench spec --bench impulse
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh

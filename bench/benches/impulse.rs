@@ -6,14 +6,14 @@
 //! and every configuration one after the other over the same rows, milliseconds apart; the
 //! table gives medians over rounds, so a change of the machine's load moves both).
 //!
-//! `cargo bench -p bandnoise-bench --bench impulse`; with `-- --test` each configuration runs
-//! once on one row and nothing is printed. Results in `bench/README.md`.
+//! `cargo bench -p bandnoise-bench --bench impulse`; under `cargo test` (or with `-- --test`)
+//! each configuration runs once on one row and nothing is printed. Results in `bench/README.md`.
 
 use bandnoise::Noise;
 use bandnoise::impulse::{Envelope, Gabor, Kernel, Orientation, SparseConvolution, Weights};
 use bandnoise::lattice::Perlin;
 use bandnoise::wiener::{Covariance, WienerNoise};
-use bandnoise_bench::{LAYOUTS, N, Run, quantile, seconds};
+use bandnoise_bench::{LAYOUTS, N, Run, measuring, quantile, seconds};
 
 /// Rounds of the paired measurement.
 const ROUNDS: usize = 21;
@@ -146,7 +146,7 @@ fn measure(configs: &[(String, Run)], test: bool) {
 }
 
 fn main() {
-    let test = std::env::args().any(|a| a == "--test");
+    let test = !measuring();
     if !test {
         println!(
             "point f32, off-lattice grid (step {}, origin {:?}); median [quartiles] of {ROUNDS} paired rounds of {ROWS} rows",

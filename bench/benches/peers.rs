@@ -18,7 +18,8 @@ use std::path::PathBuf;
 use std::time::Duration;
 
 use bandnoise_bench::{
-    FUNCTIONS, IMPLEMENTATIONS, LAYOUTS, Layout, N, Run, peer_function, quantile, seconds, workload,
+    FUNCTIONS, IMPLEMENTATIONS, LAYOUTS, Layout, N, Run, measuring, peer_function, quantile,
+    seconds, workload,
 };
 use criterion::{Criterion, Throughput};
 
@@ -189,7 +190,7 @@ fn main() {
     let mut c = Criterion::default().configure_from_args();
     peers(&mut c);
     c.final_summary();
-    if !std::env::args().any(|a| a == "--test" || a == "--list") {
+    if measuring() {
         for layout in LAYOUTS {
             table(layout);
         }

@@ -6,11 +6,11 @@
 //! the median ratio spec / typed (1.00: the `match` per call costs nothing measurable).
 //!
 //! The rows come from the description, so a noise added to it is measured here without a
-//! change. `cargo bench -p bandnoise-bench --bench spec`; with `-- --test` each workload runs
-//! once, unmeasured, and no table is printed.
+//! change. `cargo bench -p bandnoise-bench --bench spec`; under `cargo test` (or with `-- --test`)
+//! each workload runs once, unmeasured, and no table is printed.
 
 use bandnoise::spec::{Base, Spec};
-use bandnoise_bench::{Layout, N, Run, layout, quantile, seconds, workload};
+use bandnoise_bench::{Layout, N, Run, layout, measuring, quantile, seconds, workload};
 
 /// Rounds of the paired measurement.
 const ROUNDS: usize = 31;
@@ -41,7 +41,7 @@ fn spec_workload(base: Base, dims: usize, batch: bool, l: Layout) -> Option<Run>
 }
 
 fn main() {
-    let test = std::env::args().any(|a| a == "--test");
+    let test = !measuring();
     let l = layout("off-lattice").expect("the bench's user grid");
     let mut out = vec![0.0f32; N * N];
     if !test {

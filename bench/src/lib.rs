@@ -111,6 +111,15 @@ pub const IMPLEMENTATIONS: [&str; 6] = [
 /// A workload: fills `rows` rows of the grid into `out` (`rows · N` values).
 pub type Run = Box<dyn Fn(usize, &mut [f32])>;
 
+/// Whether a benchmark binary measures and prints its tables: `cargo bench` passes `--bench`.
+/// Run by `cargo test` (no `--bench`, as criterion decides its test mode), or with `--test` or
+/// `--list`, each workload runs once and nothing is timed (CI's "run once").
+pub fn measuring() -> bool {
+    let args: Vec<String> = std::env::args().collect();
+    let has = |flag: &str| args.iter().any(|a| a == flag);
+    has("--bench") && !has("--test") && !has("--list")
+}
+
 /// The seconds `run` takes to fill `rows` rows of `out`.
 pub fn seconds(run: &Run, rows: usize, out: &mut [f32]) -> f64 {
     let start = std::time::Instant::now();
