@@ -70,9 +70,12 @@ async function dragBand(i, weight) {
 }
 
 const results = [];
+/** Runs one test; prints its verdict and its seconds (CI's time budget: scripts/test.sh). */
 async function test(name, body) {
-  try { await body(); results.push([name, true]); console.log(`ok   ${name}`); }
-  catch (e) { results.push([name, false]); console.log(`FAIL ${name}\n     ${e.message}`); }
+  const t0 = performance.now();
+  const took = () => `(${((performance.now() - t0) / 1000).toFixed(1)} s)`;
+  try { await body(); results.push([name, true]); console.log(`ok   ${name} ${took()}`); }
+  catch (e) { results.push([name, false]); console.log(`FAIL ${name} ${took()}\n     ${e.message}`); }
 }
 
 await test('the page renders noise with non-trivial variance', async () => {
