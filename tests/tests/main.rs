@@ -1,7 +1,7 @@
 //! bandnoise's integration tests, one module per file beside this one, built as one test
-//! binary: one compilation and link of the noises' generic code instead of one per file
-//! (about half the workspace's test build, CI's longest step), and one pool of test threads
-//! over all of them (`cargo test -p bandnoise-tests -- seams::` runs one file's tests).
+//! binary: one compilation and link of the noises' generic code instead of one per file (this
+//! package's test build took 8 min 52 s as 26 binaries, 5 min 48 s as one, on a 2-core CI
+//! machine), and one pool of test threads over all of them (`cargo test -p bandnoise-tests -- seams::` runs one file's tests).
 
 mod bad_input;
 mod batch;

@@ -8,9 +8,8 @@ use std::fmt::Write;
 #[path = "../../src/prefix.rs"]
 mod source;
 
+use bandnoise_c::BN_MESSAGE_BYTES;
 use source::Prefix;
-
-const BN_MESSAGE_BYTES: usize = bandnoise_c::BN_MESSAGE_BYTES;
 
 #[test]
 fn a_long_message_is_its_longest_prefix_that_fits() {
