@@ -27,19 +27,24 @@ await page.waitForFunction(() => window.bandnoise && window.bandnoise.ready, nul
 // The batch path loads after the first frame.
 await page.waitForFunction(() => window.bandnoise.batch || window.bandnoise.batchError, null, { timeout: 60000 });
 
-/** Statistics of a canvas: variance of its red channel, a hash, and its pixels' red values. */
-const canvas = (id, on = page) => on.evaluate((id) => {
+/** Statistics of a canvas: variance of its red channel and a hash; with `red`, also its pixels'
+ * red values (shipping 262 144 numbers out of the page takes about 1.7 s here: only the tests
+ * that compare pixels ask for them). */
+const canvas = (id, on = page, red = false) => on.evaluate(([id, withRed]) => {
   const c = document.getElementById(id);
   const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
   let sum = 0, sum2 = 0, hash = 2166136261;
-  const red = [];
+  const red = withRed ? new Array(d.length / 4) : undefined;
   for (let i = 0; i < d.length; i += 4) {
-    sum += d[i]; sum2 += d[i] * d[i]; red.push(d[i]);
+    sum += d[i]; sum2 += d[i] * d[i];
+    if (red) red[i / 4] = d[i];
     hash = Math.imul(hash ^ d[i] ^ (d[i + 1] << 8) ^ (d[i + 2] << 16), 16777619);
   }
   const n = d.length / 4;
   return { variance: sum2 / n - (sum / n) ** 2, hash: hash >>> 0, red };
-}, id);
+}, [id, red]);
+/** A canvas's statistics and its pixels' red values. */
+const pixels = (id) => canvas(id, page, true);
 const renders = () => page.evaluate(() => window.bandnoise.renders);
 const message = () => page.textContent('#message');
 /** Changes a control and waits for the frame it causes. */
@@ -220,7 +225,7 @@ await test('gabor noise: the spectrum view shows the lobes move with frequency a
   // the frame's central 256² pixels, 4 units at zoom 64, so F₀ cycles per unit are 4·F₀ bins
   // from DC.
   const peak = async () => {
-    const { red } = await canvas('spectrum');
+    const { red } = await pixels('spectrum');
     const side = Math.round(Math.sqrt(red.length));
     let best = [-1, 0, 0];
     red.forEach((v, i) => {
@@ -273,12 +278,12 @@ await test('sparse noise: density and kernel controls change the image', async (
 
 await test('dragging a band-weight bar changes the spectrum', async () => {
   await set('kind', 'multiband');
-  const before = await canvas('spectrum');
+  const before = await pixels('spectrum');
   const n = await renders();
   await dragBand(7, 1.0);
   await dragBand(4, 0.0);
   await page.waitForFunction((k) => window.bandnoise.renders > k, n);
-  const after = await canvas('spectrum');
+  const after = await pixels('spectrum');
   assert.notEqual(before.hash, after.hash);
   let diff = 0;
   for (let i = 0; i < after.red.length; i++) diff += Math.abs(after.red[i] - before.red[i]);
@@ -290,7 +295,7 @@ await test('a periodic noise repeats after its period', async () => {
   await set('kind', 'perlin');
   await set('period', '2');
   // The canvas spans 512 / 64 = 8 cells: four periods side by side, the same pixels.
-  const s = await canvas('noise');
+  const s = await pixels('noise');
   for (let y = 0; y < 512; y += 17) {
     for (let x = 0; x < 384; x += 13) {
       assert.equal(s.red[y * 512 + x], s.red[y * 512 + x + 128], `(${x}, ${y})`);
@@ -304,9 +309,9 @@ await test('a periodic noise repeats after its period', async () => {
 await test('f32 and fixed point give nearly the same image', async () => {
   await set('kind', 'perlin');
   await set('number', 'f32');
-  const a = await canvas('noise');
+  const a = await pixels('noise');
   await set('number', 'fixed');
-  const b = await canvas('noise');
+  const b = await pixels('noise');
   let diff = 0, worst = 0;
   for (let i = 0; i < a.red.length; i++) { const d = Math.abs(a.red[i] - b.red[i]); diff += d; worst = Math.max(worst, d); }
   assert.ok(diff / a.red.length < 0.5 && worst <= 3, `mean ${diff / a.red.length}, worst ${worst}`);
@@ -401,7 +406,7 @@ await test('the comparison view: one wavelet band beside Perlin noise, sliced or
   // solid texture; off the sphere, the page's background.
   await tick('compare-sphere', true);
   assert.ok(await page.isVisible('#sphere'));
-  const onSphere = await canvas('sphere');
+  const onSphere = await pixels('sphere');
   assert.equal(onSphere.red[0], 250, 'a corner is off the sphere');
   const disc = onSphere.red.filter((v, i) => ((i % 512) - 255.5) ** 2 + (Math.floor(i / 512) - 255.5) ** 2 < 240 ** 2);
   const mean = disc.reduce((a, b) => a + b, 0) / disc.length;
