@@ -24,9 +24,10 @@ if ! (cd tests/e2e && npm ls --depth=0 >/dev/null 2>&1); then
 fi
 
 # The demo's module (web/pkg), built for size (its budget), and the benchmark page's
-# (web/pkg-bench), built for speed.
+# (web/pkg-bench) and the npm package's (web/npm, below), built for speed: those two in one
+# build, side by side (each is one codegen unit; they enable the same features of bandnoise).
 cargo build -p bandnoise-wasm --profile web-demo --target wasm32-unknown-unknown
-cargo build -p bandnoise-wasm-bench --profile web --target wasm32-unknown-unknown
+cargo build -p bandnoise-wasm-bench -p bandnoise-js --profile web --target wasm32-unknown-unknown
 for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
     name=${crate%%:*} rest=${crate#*:}
     dir=web/${rest%%:*} profile=${rest#*:}
@@ -45,8 +46,7 @@ for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
 done
 # The npm package's module (web/npm: bindings/wasm, the build scripts/npm.sh packs), which the
 # demo's plane views sample through by its batch kernels (opt-level 3, no wasm-opt: see
-# scripts/npm.sh), loaded after the demo's first frame.
-cargo build -p bandnoise-js --profile web --target wasm32-unknown-unknown
+# scripts/npm.sh), loaded after the demo's first frame; built above.
 rm -rf web/npm
 wasm-bindgen target/wasm32-unknown-unknown/web/bandnoise_js.wasm --target web --out-dir web/npm --no-typescript
 cp bindings/wasm/js/index.js web/npm/

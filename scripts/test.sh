@@ -116,12 +116,33 @@ step "fuzzing: the targets' runs"
 (
     cd fuzz
     cargo fmt --all -- --check
-    for target in hash lattice wavelet fractal spec impulse; do
-        # New inputs go to a scratch corpus; the committed seeds stay as they are.
-        mkdir -p "../target/fuzz-corpus/$target"
-        cargo +nightly-2026-05-20 fuzz run "$target" "../target/fuzz-corpus/$target" "corpus/$target" \
-            -- -max_total_time=20
-    done
+    # All targets in one build: their binaries compile side by side (one by one, inside each
+    # run, they took 5.3 of the step's 7.5 minutes); each run below then finds its binary built.
+    cargo +nightly-2026-05-20 fuzz build
+    # Each run is one process on one core: two at a time, three targets each. A run's output
+    # goes to target/fuzz-logs/; its last lines are printed, all of it when it fails.
+    mkdir -p ../target/fuzz-logs
+    runs() {
+        for target in "$@"; do
+            # New inputs go to a scratch corpus; the committed seeds stay as they are.
+            mkdir -p "../target/fuzz-corpus/$target"
+            log=../target/fuzz-logs/$target.log
+            if cargo +nightly-2026-05-20 fuzz run "$target" "../target/fuzz-corpus/$target" \
+                "corpus/$target" -- -max_total_time=20 >"$log" 2>&1; then
+                echo "fuzz target $target: $(tail -n 1 "$log")"
+            else
+                cat "$log"
+                echo "error: fuzz target $target failed (its log: target/fuzz-logs/$target.log)" >&2
+                return 1
+            fi
+        done
+    }
+    runs hash wavelet spec &
+    first=$!
+    runs lattice fractal impulse &
+    second=$!
+    wait "$first"
+    wait "$second"
 )
 
 step "gallery renders"
