@@ -32,11 +32,13 @@ step "API docs build without warnings (broken links, missing docs)"
 RUSTDOCFLAGS="-D warnings" cargo doc -p bandnoise --no-deps
 
 step "core builds for every target"
-# One build for the four, two at a time on two cores (each is one codegen unit).
-cargo build -p bandnoise --release --target thumbv6m-none-eabi --target thumbv7em-none-eabihf \
+# The crate alone, no_std, with its default features, checked for the four targets (no code
+# generated: the firmware and browser steps below build and run it on each of them, inside
+# their programs; a release build here took 2 minutes and was used by nothing).
+cargo check -p bandnoise --target thumbv6m-none-eabi --target thumbv7em-none-eabihf \
     --target riscv32imc-unknown-none-elf --target wasm32-unknown-unknown
 # The optional serde feature stays no_std and allocation-free.
-cargo build -p bandnoise --release --target thumbv6m-none-eabi --features serde
+cargo check -p bandnoise --target thumbv6m-none-eabi --features serde
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
@@ -146,6 +148,9 @@ step "fuzzing: the targets' runs"
 )
 
 step "gallery renders"
+# The gallery and the bandnoise command (the guide's figures, below) side by side: each is one
+# codegen unit, and they enable the same features of what they share.
+cargo build --release -p bandnoise-gallery -p bandnoise-cli
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png
 
