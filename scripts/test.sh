@@ -149,7 +149,9 @@ step "fuzzing: the targets' runs"
 
 step "gallery renders"
 # The gallery and the bandnoise command (the guide's figures, below) side by side: each is one
-# codegen unit, and they enable the same features of what they share.
+# codegen unit, and built together they are the same units as alone (the same features and
+# link-time optimisation of what they share), so each later build of one finds it fresh. (Not
+# the C library: a static library's dependencies are built for another kind of LTO.)
 cargo build --release -p bandnoise-gallery -p bandnoise-cli
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png
