@@ -122,7 +122,7 @@ step "fuzzing: the targets' runs"
     # run, they took 5.3 of the step's 7.5 minutes); each run below then finds its binary built.
     cargo +nightly-2026-05-20 fuzz build
     # Each run is one process on one core: two at a time, three targets each. A run's output
-    # goes to target/fuzz-logs/; its last lines are printed, all of it when it fails.
+    # goes to target/fuzz-logs/; its last line is printed, all of it when it fails.
     mkdir -p ../target/fuzz-logs
     runs() {
         for target in "$@"; do
