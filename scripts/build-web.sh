@@ -25,9 +25,14 @@ fi
 
 # The demo's module (web/pkg), built for size (its budget), and the benchmark page's
 # (web/pkg-bench) and the npm package's (web/npm, below), built for speed: those two in one
-# build, side by side (each is one codegen unit; they enable the same features of bandnoise).
-cargo build -p bandnoise-wasm --profile web-demo --target wasm32-unknown-unknown
+# build (they enable the same features of bandnoise). Each module is one codegen unit, one
+# core: the demo's builds beside them (scripts/side.sh; its profile has its own directories).
+. scripts/side.sh
+mkdir -p target
+side target/web-demo.log cargo build -p bandnoise-wasm --profile web-demo --target wasm32-unknown-unknown
+demo_pid=$side_pid
 cargo build -p bandnoise-wasm-bench -p bandnoise-js --profile web --target wasm32-unknown-unknown
+side_wait "$demo_pid" target/web-demo.log "building the demo's module"
 for crate in bandnoise_wasm:pkg:web-demo bandnoise_wasm_bench:pkg-bench:web; do
     name=${crate%%:*} rest=${crate#*:}
     dir=web/${rest%%:*} profile=${rest#*:}
