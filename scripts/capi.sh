@@ -15,9 +15,8 @@ cflags=(-std=c99 -Wall -Wextra -Werror -Icapi/include -Icapi/examples)
 cc "${cflags[@]}" -pedantic -fsyntax-only -x c capi/include/bandnoise.h
 c++ -std=c++11 -Wall -Wextra -Werror -pedantic -fsyntax-only -x c++ capi/include/bandnoise.h
 
-# The firmware libraries (Cortex-M4F, and Cortex-M0's first part) build beside the host's
-# (scripts/side.sh; one after the other the four took 7 of the step's 7.6 minutes), in a build
-# directory of their own.
+# The firmware libraries (Cortex-M4F, and Cortex-M0's first part) build beside the host's, in a
+# build directory of their own (scripts/side.sh): each library is one codegen unit, one core.
 . scripts/side.sh
 cross=target/capi-cross
 m4f=thumbv7em-none-eabihf
