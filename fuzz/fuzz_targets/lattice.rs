@@ -2,7 +2,7 @@
 //! added there is fuzzed unasked), simplex noise, white and cubic value noise (either
 //! distribution) and cellular noise (its output, metric and jitter from the input; a cell value is not compared across number types, since rounding can
 //! change which point is nearest), sampled through the description (bit for bit the typed
-//! noise: tests/tests/spec.rs), 1D–4D, in f32 and I16F16, with arbitrary bit patterns as
+//! noise: api-tests/tests/spec.rs), 1D–4D, in f32 and I16F16, with arbitrary bit patterns as
 //! coordinates and seeds: no panic, never NaN or -0.0, within the documented bound; fixed point
 //! and f32 agree within 2⁻¹¹ (simplex noise 2⁻¹⁰: its scale and its kernel's fourth power
 //! amplify fixed point's roundings) where the input is exact in both; gradients are finite; the batch

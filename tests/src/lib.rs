@@ -348,7 +348,7 @@ pub fn low_frequency_fraction(grid: &[f64], side: usize, spacing: f64, cutoff: f
     low_frequency_fraction_windowed(grid, side, spacing, cutoff, false)
 }
 
-/// A number type's bad inputs, for the bad-input tests (`tests/tests/contract.rs`,
+/// A number type's bad inputs, for the bad-input tests (`api-tests/tests/contract.rs`,
 /// `bad_input.rs`): the values a sweep of the public API from outside the crate found worth
 /// trying.
 pub trait Special: Real + std::fmt::Display {
