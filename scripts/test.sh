@@ -120,7 +120,10 @@ step "fuzzing: the targets' runs"
     cargo fmt --all -- --check
     # All targets in one build: their binaries compile side by side (one by one, inside each
     # run, they took 5.3 of the step's 7.5 minutes); each run below then finds its binary built.
-    cargo +nightly-2026-05-20 fuzz build
+    # No sanitizer: the crate forbids unsafe code and the targets assert properties (values,
+    # bounds, no panic), which AddressSanitizer does not check; without it the build takes a
+    # quarter less time and a run executes about three times as many inputs in its 20 s.
+    cargo +nightly-2026-05-20 fuzz build --sanitizer none
     # Each run is one process on one core: two at a time, three targets each. A run's output
     # goes to target/fuzz-logs/; its last line is printed, all of it when it fails.
     mkdir -p ../target/fuzz-logs
@@ -129,7 +132,7 @@ step "fuzzing: the targets' runs"
             # New inputs go to a scratch corpus; the committed seeds stay as they are.
             mkdir -p "../target/fuzz-corpus/$target"
             log=../target/fuzz-logs/$target.log
-            if cargo +nightly-2026-05-20 fuzz run "$target" "../target/fuzz-corpus/$target" \
+            if cargo +nightly-2026-05-20 fuzz run --sanitizer none "$target" "../target/fuzz-corpus/$target" \
                 "corpus/$target" -- -max_total_time=20 >"$log" 2>&1; then
                 echo "fuzz target $target: $(tail -n 1 "$log")"
             else
