@@ -70,6 +70,14 @@ cargo test -p bandnoise-js --target wasm32-unknown-unknown --test kernel
 bash scripts/npm.sh
 
 step "firmware under QEMU: the host's checksums on Cortex-M0, Cortex-M4F and RV32IMC"
+# The gallery and the bandnoise command (the gallery step's build, below) build in the
+# background from here: the firmware programs are each linked whole and QEMU runs one program
+# at a time, so one core is often idle in these two steps; the build is waited for before the
+# fuzz runs, which keep both cores busy.
+source scripts/side.sh
+mkdir -p target
+side target/gallery-build.log cargo build --release -p bandnoise-gallery -p bandnoise-cli
+gallery_build=$side_pid
 if ! command -v qemu-system-arm >/dev/null || ! command -v qemu-system-riscv32 >/dev/null; then
     apt-get update
     # This machine kind ships qemu-utils from bookworm-backports, which breaks the plain
@@ -108,6 +116,8 @@ fi
 )
 step "firmware: instructions per sample and footprint"
 bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
+
+side_wait "$gallery_build" target/gallery-build.log "the gallery's and the command line's build"
 
 step "fuzzing: every target for 20 s (pinned nightly, cargo-fuzz)"
 rustup toolchain install nightly-2026-05-20 --profile minimal # instant when present
@@ -151,10 +161,11 @@ step "fuzzing: the targets' runs"
 )
 
 step "gallery renders"
-# The gallery and the bandnoise command (the guide's figures, below) side by side: each is one
-# codegen unit, and built together they are the same units as alone (the same features and
-# link-time optimisation of what they share), so each later build of one finds it fresh. (Not
-# the C library: a static library's dependencies are built for another kind of LTO.)
+# The gallery and the bandnoise command (the guide's figures, below) were built side by side
+# (in the background, from the firmware step): each is one codegen unit, and built together
+# they are the same units as alone (the same features and link-time optimisation of what they
+# share), so each later build of one finds it fresh. (Not the C library: a static library's
+# dependencies are built for another kind of LTO.) Fresh: this only checks.
 cargo build --release -p bandnoise-gallery -p bandnoise-cli
 cargo run --release -p bandnoise-gallery -- --size 64 --out target/gallery-smoke
 test -s target/gallery-smoke/perlin-2d.png
