@@ -61,8 +61,6 @@ if [ "$size" -gt 216000 ]; then
 fi
 step "browser: the demo module's wasm-bindgen tests in Chromium"
 CHROMEDRIVER=$(command -v chromedriver) cargo test -p bandnoise-wasm --target wasm32-unknown-unknown
-step "browser: the demo end to end"
-node tests/e2e/demo.test.mjs
 step "browser: the npm package"
 # The npm package: its SIMD point kernel equals the portable one (Node), then the package packed,
 # installed into an empty folder, used from Node, TypeScript and Chromium.
@@ -102,6 +100,15 @@ fi
         --bin checks-fixed --bin checks-fixed-other --bin checks-float --bin checks-float-other
     cargo build --release -p firmware-cortex-m --target thumbv7em-none-eabihf \
         --bin checks --bin led --bin nopanic --bin nopanic-spec --bin nopanic-text
+)
+# The demo's end-to-end test (printed below, after the instruction counts) runs beside the QEMU
+# runs and counts: it drives one Chromium page, mostly one core, as QEMU does. Its printed
+# frames per second are then measured beside QEMU; its assertions are pixels and ratios
+# measured in the same page.
+side target/e2e.log node tests/e2e/demo.test.mjs
+e2e=$side_pid
+(
+    cd firmware
     # The Cortex-M0's 256 KiB of flash hold one part of one number type's checksum code at a
     # time (the descriptions, the others), built for size (firmware/Cargo.toml, m0-checks).
     cargo run --profile m0-checks -p firmware-cortex-m --bin checks-fixed --target thumbv6m-none-eabi
@@ -116,6 +123,10 @@ fi
 )
 step "firmware: instructions per sample and footprint"
 bash scripts/count-instructions.sh # instructions per sample and footprint, with their goals
+
+step "browser: the demo end to end (run beside the firmware steps)"
+side_wait "$e2e" target/e2e.log "the demo's end-to-end test"
+cat target/e2e.log
 
 side_wait "$gallery_build" target/gallery-build.log "the gallery's and the command line's build"
 
