@@ -3,7 +3,9 @@
 //! histogram against the standard normal). `bandnoise --help` lists the commands and
 //! examples.
 
-use bandnoise_cli::{analysis, image};
+mod image;
+
+use bandnoise_analysis as analysis;
 
 use std::fmt::Write as _;
 use std::io::{IsTerminal, Write};

@@ -282,7 +282,7 @@ pub fn power_spectrum(grid: &[f64], side: usize, hann: bool) -> Vec<f64> {
         .enumerate()
         .map(|(i, &v)| v * window[i % side] * window[i / side])
         .collect();
-    bandnoise_cli::analysis::power(&windowed, side)
+    bandnoise_analysis::power(&windowed, side)
 }
 
 /// The signed frequency of FFT bin `k` of `side` bins, in cycles per unit for samples

@@ -2,6 +2,10 @@
 //! Noise Functions", §6): the periodogram averaged over blocks (Bartlett's method), its radial
 //! average (power against frequency), and the histogram of standardised values against the
 //! standard normal density.
+//!
+//! A package of its own, beside the `bandnoise` command (`cli/`), so that the test profile
+//! can build the command unoptimised while the statistical tests' spectra
+//! (`bandnoise-tests`) keep an optimised transform.
 
 use std::f64::consts::PI;
 
