@@ -1,6 +1,6 @@
 //! The analysis on known inputs: a sine's power in one ring of the spectrum, the histogram a
-//! density. (Tests here, not in the library: a test-mode copy of the library, which
-//! instantiates rustfft, took 29 CPU-seconds to build.)
+//! density. (Tests here, not in the library: a test-mode copy of the library instantiates
+//! rustfft again, about half a minute of build for two tests.)
 
 use std::f64::consts::PI;
 

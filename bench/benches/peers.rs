@@ -23,9 +23,9 @@ use bandnoise_bench::{
 };
 use criterion::{Criterion, Throughput};
 
-/// Grid rows a workload fills when it runs once, unmeasured: every row of the grid took 34
-/// seconds of CI's test step for all workloads; a few rows still cross cells and fill whole
-/// and partial batch chunks.
+/// Grid rows a workload fills when it runs once, unmeasured (the test command's smoke run):
+/// enough to cross cells and fill whole and partial batch chunks; the whole grid for every
+/// workload would take half a minute.
 const TEST_ROWS: usize = 3;
 
 fn peers(c: &mut Criterion) {
