@@ -15,6 +15,11 @@ step "format and lints"
 cargo fmt --all -- --check
 cargo clippy --workspace --all-targets -- -D warnings
 cargo clippy -p bandnoise-wasm -p bandnoise-wasm-bench -p bandnoise-js --target wasm32-unknown-unknown --all-targets -- -D warnings
+# Core alone on a no_std target without a float unit, with the optional serde feature (no_std
+# and allocation-free too). Its default features on every target are built by the firmware
+# steps (Cortex-M0, Cortex-M4F, RV32IMC: the same dependency versions, firmware/Cargo.lock) and
+# the browser steps (wasm32: the benchmark page's and the npm package's modules).
+cargo clippy -p bandnoise --target thumbv6m-none-eabi --features serde -- -D warnings
 
 step "unit, integration and doc tests; benchmarks compile and run once"
 # `--tests`: every target with tests, not the examples (clippy above checked that they build);
@@ -24,21 +29,16 @@ step "unit, integration and doc tests; benchmarks compile and run once"
 # each (test mode), bandnoise's own (tests/benches) and against the peer crates (bench/benches;
 # the measured run is scripts/bench-peers.sh), in the same build (a command of their own
 # resolves other features and rebuilt the crate and its users).
+# The integration tests' binary is built first, alone: it is the build's largest unit and, as
+# nothing depends on it, cargo would start it last of all, leaving one core idle at the end
+# (the build, cold on 2 cores: 7:32 -> 7:04).
+cargo test --workspace --test integration --no-run
 cargo test --workspace --tests \
     --bench lattice --bench wavelet --bench peers --bench spec --bench impulse
 cargo test --workspace --doc
 
 step "API docs build without warnings (broken links, missing docs)"
 RUSTDOCFLAGS="-D warnings" cargo doc -p bandnoise --no-deps
-
-step "core builds for every target"
-# The crate alone, no_std, with its default features, checked for the four targets (no code
-# generated: the firmware and browser steps below build and run it on each of them, inside
-# their programs; a release build here took 2 minutes and was used by nothing).
-cargo check -p bandnoise --target thumbv6m-none-eabi --target thumbv7em-none-eabihf \
-    --target riscv32imc-unknown-none-elf --target wasm32-unknown-unknown
-# The optional serde feature stays no_std and allocation-free.
-cargo check -p bandnoise --target thumbv6m-none-eabi --features serde
 
 step "compile-time cost and size of wavelet tiles"
 bash scripts/measure-tiles.sh
