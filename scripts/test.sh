@@ -29,9 +29,8 @@ step "unit, integration and doc tests; benchmarks compile and run once"
 # each (test mode), bandnoise's own (tests/benches) and against the peer crates (bench/benches;
 # the measured run is scripts/bench-peers.sh), in the same build (a command of their own
 # resolves other features and rebuilt the crate and its users).
-# The integration tests' binary is built first, alone: it is the build's largest unit and, as
-# nothing depends on it, cargo would start it last of all, leaving one core idle at the end
-# (the build, cold on 2 cores: 7:32 -> 7:04).
+# The integration tests' binary is built first, alone: it is the build's largest unit, and
+# cargo starts the units that nothing depends on late, which left one core idle at the end.
 cargo test --workspace --test integration --no-run
 cargo test --workspace --tests \
     --bench lattice --bench wavelet --bench peers --bench spec --bench impulse
