@@ -102,6 +102,25 @@ impl<R: Real, const D: usize> Grid<R, D> {
         self.origin[axis].saturating_add(i.wrapping_mul(self.step[axis]))
     }
 
+    /// [`coordinate`](Self::coordinate) of the [`LANES`] indices `first, first + 1, …` along
+    /// `axis`, bit for bit. Up to index 32767 every number type holds the indices exactly
+    /// (I16F16's largest integer), so `first + l` is the sum of `first` and `l` converted
+    /// once: lanes of additions, where converting each index from `usize` through the clamp
+    /// was most of a batch's work on coordinates (`bench/README.md`). Beyond, index by index.
+    #[inline]
+    pub(crate) fn lanes(&self, axis: usize, first: usize) -> [R; LANES] {
+        const EXACT: usize = (1 << 15) - LANES;
+        let (origin, step) = (self.origin[axis], self.step[axis]);
+        if first <= EXACT {
+            let base = R::from_i32(first as i32);
+            core::array::from_fn(|l| {
+                origin.saturating_add((base + R::from_i32(l as i32)).wrapping_mul(step))
+            })
+        } else {
+            core::array::from_fn(|l| self.coordinate(axis, first.saturating_add(l)))
+        }
+    }
+
     /// The point at `index` (see the type's docs for the arithmetic).
     #[must_use]
     pub fn point(&self, index: [usize; D]) -> [R; D] {
@@ -223,7 +242,8 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     grid: &Grid<R, D>,
     out: &mut [R],
 ) -> Result<(), Error> {
-    // Coordinates along axis 0 are the same for every row: compute them once per chunk column.
+    // The other axes' coordinates are the row's (the lanes along axis 0 are computed per
+    // chunk: cheaper than a buffer of a row's).
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
     for_each_row(grid, out, |start, row_out| {
@@ -231,9 +251,7 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
             *lane = [x; LANES];
         }
         for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
-            for (l, x) in lanes[0].iter_mut().enumerate() {
-                *x = grid.coordinate(0, c * LANES + l);
-            }
+            lanes[0] = grid.lanes(0, c * LANES);
             noise.sample_lanes(&lanes, &mut values);
             store_lanes(chunk, &values);
         }
@@ -293,4 +311,53 @@ pub(crate) fn check_len(expected: usize, found: usize) -> Result<(), Error> {
 #[inline]
 pub(crate) fn lane<R: Copy, const D: usize>(p: &[[R; LANES]; D], l: usize) -> [R; D] {
     core::array::from_fn(|a| p[a][l])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::I16F16;
+
+    /// `Grid::lanes` is `Grid::coordinate` of each index, bit for bit, on both sides of the
+    /// exact-sum limit and far beyond it (where fixed point saturates and the clamp to
+    /// `i32::MAX` applies), for each number type.
+    #[test]
+    fn lanes_are_the_coordinates() {
+        let firsts = [
+            0,
+            16,
+            1000,
+            (1 << 15) - 2 * LANES,
+            (1 << 15) - LANES - 1,
+            (1 << 15) - LANES,
+            (1 << 15) - LANES + 1,
+            1 << 15,
+            (1 << 24) - 8,
+            i32::MAX as usize - 20,
+            i32::MAX as usize - 3,
+            usize::MAX - 5,
+        ];
+        macro_rules! check {
+            ($t:ty, $from:expr, $bits:expr) => {
+                let origins = [-4.123, 0.0, 0.37, 1000.5, -30000.0];
+                let steps = [0.0737, 1.0 / 16.0, -0.29, 3.0, 0.0];
+                for (&o, &s) in origins.iter().zip(&steps) {
+                    let g: Grid<$t, 2> =
+                        Grid::new([$from(o), $from(s)], [$from(s), $from(o)], [1, 1]);
+                    for &first in &firsts {
+                        for axis in 0..2 {
+                            let lanes = g.lanes(axis, first);
+                            for (l, &x) in lanes.iter().enumerate() {
+                                let c = g.coordinate(axis, first.saturating_add(l));
+                                assert_eq!($bits(x), $bits(c), "{o} {s} {first} {axis} {l}");
+                            }
+                        }
+                    }
+                }
+            };
+        }
+        check!(f32, |v: f64| v as f32, f32::to_bits);
+        check!(f64, |v: f64| v, f64::to_bits);
+        check!(I16F16, I16F16::from_num, I16F16::to_bits);
+    }
 }

@@ -423,7 +423,7 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
             s: [R::ZERO; LANES],
         }; CHUNKS_PER_BLOCK];
         for (k, xk) in x.iter_mut().enumerate().take(chunks) {
-            let x = core::array::from_fn(|l| grid.coordinate(0, block + k * LANES + l));
+            let x = grid.lanes(0, block + k * LANES);
             R::split_lanes(&x, &mut xk.cell, &mut xk.f);
             xk.s = xk.f.map(L::Fade::fade);
         }
@@ -527,7 +527,7 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
         .take(chunks)
         .enumerate()
     {
-        let x = core::array::from_fn(|l| grid.coordinate(0, block + k * LANES + l));
+        let x = grid.lanes(0, block + k * LANES);
         R::split_lanes(&x, ck, fk);
         *sk = fk.map(L::Fade::fade);
     }
