@@ -242,8 +242,7 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     grid: &Grid<R, D>,
     out: &mut [R],
 ) -> Result<(), Error> {
-    // The other axes' coordinates are the row's (the lanes along axis 0 are computed per
-    // chunk: cheaper than a buffer of a row's).
+    // The other axes hold the row's coordinates; each chunk computes its own along axis 0.
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
     for_each_row(grid, out, |start, row_out| {

@@ -959,7 +959,7 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
     /// that share their y/z coefficients together (`band/row.rs`).
     fn fill_grid(&self, grid: &Grid<R, D>, out: &mut [R]) -> Result<(), Error> {
         for_each_rows::<R, D, GROUP>(grid, out, |starts, values| {
-            self.fill_rows(starts, |i| grid.coordinate(0, i), values, |o, v| *o = v);
+            self.fill_rows(starts, |first| grid.lanes(0, first), values, |o, v| *o = v);
         })
     }
 

@@ -636,7 +636,7 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Multiband<'_, T> {
                 }
                 self.band.fill_rows(
                     rests.get(..starts.len()).unwrap_or_default(),
-                    |i| to_band(grid.coordinate(0, i), 0),
+                    |first| grid.lanes(0, first).map(|x| to_band(x, 0)),
                     values,
                     |sum, v| *sum = sum.saturating_add(weight.mul_rn(v)),
                 );

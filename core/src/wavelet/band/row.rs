@@ -154,16 +154,17 @@ fn accumulate<R: Real>(sums: &mut [R], weights: &[R], column: R, factor: Option<
 }
 
 impl<T> Wavelet<'_, T> {
-    /// Writes, through `put`, the band at `(x(i), rest[1], …)` into `out[r · len + i]` for
+    /// Writes, through `put`, the band at `(x_i, rest[1], …)` into `out[r · len + i]` for
     /// each row `r` (its `rest` being `rests[r]`, `rest[0]` ignored) and every `i` below
-    /// `len = out.len() / rests.len()`: bit for bit `evaluate` at each point. The rows, at
+    /// `len = out.len() / rests.len()`: bit for bit `evaluate` at each point. `x(first)` gives
+    /// the [`LANES`] coordinates `x_first, x_(first + 1), …` (past `len` too, unused). The rows, at
     /// most [`GROUP`], are consecutive rows of a grid; those that share their y/z
     /// coefficients are summed together.
     #[inline]
     pub(crate) fn fill_rows<R: Real, const D: usize>(
         &self,
         rests: &[[R; D]],
-        x: impl Fn(usize) -> R,
+        x: impl Fn(usize) -> [R; LANES],
         out: &mut [R],
         put: impl Fn(&mut R, R),
     ) where
@@ -200,7 +201,7 @@ impl<T> Wavelet<'_, T> {
     fn fill_group<R: Real, const D: usize>(
         &self,
         rows: &[Row<R, D>],
-        x: &impl Fn(usize) -> R,
+        x: &impl Fn(usize) -> [R; LANES],
         out: &mut [R],
         put: &impl Fn(&mut R, R),
     ) where
@@ -246,14 +247,16 @@ impl<T> Wavelet<'_, T> {
         // compiler vectorises them), then each run of samples with the same first coefficient
         // (a span) summed lane by lane, entry by entry, which it vectorises too. Each sample's
         // operations are `evaluate`'s, in its order: only the loops are interchanged.
-        let mut x_lanes = [R::ZERO; LANES];
         let (mut firsts, mut weights) = ([0i32; LANES], [[R::ZERO; LANES]; 3]);
         for c in 0..len.div_ceil(LANES) {
             let start = c * LANES;
             let width = (len - start).min(LANES);
-            for (l, v) in x_lanes.iter_mut().enumerate() {
-                // Lanes past the row's end repeat its last sample (never written).
-                *v = x(start + l.min(width - 1));
+            let mut x_lanes = x(start);
+            // Lanes past the row's end repeat its last sample (never written).
+            if let Some(&last) = x_lanes.get(width.wrapping_sub(1)) {
+                for v in x_lanes.iter_mut().skip(width) {
+                    *v = last;
+                }
             }
             bspline3_lanes(&x_lanes, &mut firsts, &mut weights);
             let mut a = 0;
