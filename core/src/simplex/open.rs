@@ -402,25 +402,11 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
     #[cfg_attr(feature = "small", inline(never))]
     #[cfg_attr(not(feature = "small"), inline)]
     fn add(&mut self, seed: i64, cell: [i64; D], d: [R; D]) -> bool {
-        // |dₐ| < 2: the squares, their sum and its product with 1/r² ≤ 2 fit every type.
-        let mut q = R::ZERO;
-        for x in d {
-            q = q + x.mul_fraction(x);
-        }
-        let tau = R::ONE - q.mul_fraction(self.inverse_radius);
+        let tau = reach(d, self.inverse_radius);
         if tau <= R::ZERO {
             return false;
         }
-        let mut h = seed;
-        for a in 0..D {
-            h ^= cell[a].wrapping_mul(PRIME[a]);
-        }
-        let g = gradient::<R, D>(h.wrapping_mul(HASH_MULTIPLIER));
-        // |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
-        let mut dot = R::ZERO;
-        for a in 0..D {
-            dot = dot + d[a].mul_fraction(g[a]);
-        }
+        let (g, dot) = hash_dot(seed, cell, d);
         let tau2 = tau.mul_fraction(tau);
         let tau4 = tau2.mul_fraction(tau2);
         self.value = self.value + tau4.mul_fraction(dot);
@@ -446,6 +432,45 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
     fn vertex(&mut self, seed: i64, cell: [i64; D], d: [R; D]) {
         self.add(seed, cell, d);
     }
+}
+
+/// `τ = 1 − |d|²/r²` of a vertex at offset `d`: it is in reach where `τ > 0`.
+#[inline(always)]
+fn reach<R: Real, const D: usize>(d: [R; D], inverse_radius: R) -> R {
+    // |dₐ| < 2: the squares, their sum and its product with 1/r² ≤ 2 fit every type.
+    let mut q = R::ZERO;
+    for x in d {
+        q = q + x.mul_fraction(x);
+    }
+    R::ONE - q.mul_fraction(inverse_radius)
+}
+
+/// The gradient `g` of the vertex `cell` (hashed with `seed`) and `g·d`.
+#[inline(always)]
+fn hash_dot<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D]) -> ([R; D], R) {
+    let mut h = seed;
+    for a in 0..D {
+        h ^= cell[a].wrapping_mul(PRIME[a]);
+    }
+    let g = gradient::<R, D>(h.wrapping_mul(HASH_MULTIPLIER));
+    // |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
+    let mut dot = R::ZERO;
+    for a in 0..D {
+        dot = dot + d[a].mul_fraction(g[a]);
+    }
+    (g, dot)
+}
+
+/// A vertex's term `τ⁴ (g·d)` as [`Sum::add`] adds it, and an exact 0 out of reach (where
+/// `add` adds nothing: a sum starts at +0 and so is never −0, and adding ±0 to it changes
+/// nothing). For the lane bodies, which compute every vertex of every lane.
+#[inline(always)]
+fn term<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D], inverse_radius: R) -> R {
+    let tau = reach(d, inverse_radius);
+    let tau = if tau > R::ZERO { tau } else { R::ZERO };
+    let (_, dot) = hash_dot(seed, cell, d);
+    let tau2 = tau.mul_fraction(tau);
+    tau2.mul_fraction(tau2).mul_fraction(dot)
 }
 
 /// The gradient for the mixed hash `h`: its top bits folded onto its low bits index the
@@ -536,10 +561,8 @@ fn body_2d<R: Real, const G: bool>(seed: i64, t: [f64; 2], smooth: bool, sum: &m
 
 /// OpenSimplex2's 2D noise at [`LANES`] points, bit for bit [`evaluate`] at each: the same
 /// operations on each lane in the same order, each step a loop over the lanes so that the
-/// compiler vectorises it. Two rewrites keep the bits: a vertex out of reach adds an exact 0
-/// where `evaluate` skips it (a sum starts at +0 and so is never −0, and adding ±0 to it
-/// changes nothing), and a vertex's hash term `(cₐ + sₐ)·Pₐ` is the cell's `cₐ·Pₐ` plus the
-/// step's `sₐ·Pₐ` (wrapping products: the same integers).
+/// compiler vectorises what it can. Every vertex of every lane is computed, out of reach as an
+/// exact 0 ([`term`]).
 #[inline]
 fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out: &mut [R; LANES]) {
     let kernel = &FAST[2];
@@ -558,7 +581,6 @@ fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out:
     let unskew = real::<R>(UNSKEW_2D);
     let mut d0 = [[R::ZERO; LANES]; 2];
     let mut third = [[0i32; LANES]; 2];
-    let mut term = [[0i64; LANES]; 2];
     for l in 0..LANES {
         let (fx, fy) = (real::<R>(frac[0][l]), real::<R>(frac[1][l]));
         let shift = unskew.mul_fraction(fx + fy);
@@ -568,9 +590,6 @@ fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out:
         let up = i32::from(fy > fx);
         third[0][l] = 1 - up;
         third[1][l] = up;
-        for a in 0..2 {
-            term[a][l] = i64::from(cell[a][l]).wrapping_mul(PRIME[a]);
-        }
     }
     let mut value = [R::ZERO; LANES];
     for corner in 0..3 {
@@ -580,28 +599,74 @@ fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out:
                 1 => [1, 1],
                 _ => [third[0][l], third[1][l]],
             };
+            let cell = plus([cell[0][l], cell[1][l]], step);
             let d = unskewed([d0[0][l], d0[1][l]], step, unskew);
-            // `Sum::add`'s operations, the reach test a clamp.
-            let mut q = R::ZERO;
-            for x in d {
-                q = q + x.mul_fraction(x);
-            }
-            let tau = R::ONE - q.mul_fraction(inverse_radius);
-            let tau = if tau > R::ZERO { tau } else { R::ZERO };
-            let mut h = seed;
-            for a in 0..2 {
-                h ^= term[a][l].wrapping_add(i64::from(step[a]).wrapping_mul(PRIME[a]));
-            }
-            let g = gradient::<R, 2>(h.wrapping_mul(HASH_MULTIPLIER));
-            let mut dot = R::ZERO;
-            for a in 0..2 {
-                dot = dot + d[a].mul_fraction(g[a]);
-            }
-            let tau2 = tau.mul_fraction(tau);
-            let tau4 = tau2.mul_fraction(tau2);
-            value[l] = value[l] + tau4.mul_fraction(dot);
+            value[l] = value[l] + term(seed, cell, d, inverse_radius);
         }
     }
+    finish_lanes(&value, kernel, out);
+}
+
+/// OpenSimplex2's 3D noise at [`LANES`] points, bit for bit [`evaluate`] at each
+/// ([`fast_3d`]'s vertices in its order, each lane's through [`term`]).
+#[inline]
+fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out: &mut [R; LANES]) {
+    let kernel = &FAST[3];
+    let inverse_radius = real::<R>(kernel.inverse_radius);
+    let half = R::from_ratio(1, 1);
+    let mut cell = [[0i64; 3]; LANES];
+    let mut d = [[R::ZERO; 3]; LANES];
+    // `fast_3d`'s `up`: the side of the nearest vertex the point lies on, per axis.
+    let mut up = [[false; 3]; LANES];
+    for l in 0..LANES {
+        let t = turn([p[0][l], p[1][l], p[2][l]], improve, false);
+        for a in 0..3 {
+            let (c, f) = round_split::<R>(t[a]);
+            cell[l][a] = i64::from(c);
+            d[l][a] = f;
+            up[l][a] = f >= R::ZERO;
+        }
+    }
+    let mut value = [R::ZERO; LANES];
+    for lattice in 0..2 {
+        let seed = if lattice == 0 {
+            seed
+        } else {
+            seed ^ SEED_FLIP_3D
+        };
+        for l in 0..LANES {
+            let (c, e, up) = (cell[l], d[l], &mut up[l]);
+            value[l] = value[l] + term(seed, c, e, inverse_radius);
+            let axis = largest(e.map(Real::abs));
+            let (mut next, mut f) = (c, e);
+            if up[axis] {
+                next[axis] += 1;
+                f[axis] = f[axis] - R::ONE;
+            } else {
+                next[axis] -= 1;
+                f[axis] = f[axis] + R::ONE;
+            }
+            value[l] = value[l] + term(seed, next, f, inverse_radius);
+            if lattice == 0 {
+                // The other cubic lattice, offset by (½, ½, ½), as `fast_3d` moves to it.
+                for a in 0..3 {
+                    if up[a] {
+                        cell[l][a] += 1;
+                        d[l][a] = e[a] - half;
+                    } else {
+                        d[l][a] = e[a] + half;
+                    }
+                    up[a] = !up[a];
+                }
+            }
+        }
+    }
+    finish_lanes(&value, kernel, out);
+}
+
+/// [`evaluate`]'s scaling of the sums, lane by lane.
+#[inline(always)]
+fn finish_lanes<R: Real>(value: &[R; LANES], kernel: &Kernel, out: &mut [R; LANES]) {
     let scale = real::<R>(kernel.scale);
     for l in 0..LANES {
         out[l] = value[l].mul_rn(scale).canonical();
@@ -1040,8 +1105,14 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                if let (Ok(p), false) = (<&[[R; LANES]; 2]>::try_from(&p[..]), $smooth) {
+                if $smooth {
+                    for (l, o) in out.iter_mut().enumerate() {
+                        *o = self.sample(crate::batch::lane(p, l));
+                    }
+                } else if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
                     fast_2d_lanes(self.seed, self.improve, p, out);
+                } else if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
+                    fast_3d_lanes(self.seed, self.improve, p, out);
                 } else {
                     for (l, o) in out.iter_mut().enumerate() {
                         *o = self.sample(crate::batch::lane(p, l));
@@ -1316,24 +1387,36 @@ mod tests {
     use super::*;
     use crate::{I16F16, Noise};
 
-    /// `fast_2d_lanes` gives `sample`'s bits at each lane, for every orientation, several
-    /// seeds and every number type: random points near and far from the origin, points on
-    /// the lattice's edges (`fy = fx`, integer skewed coordinates), and non-finite ones.
+    /// The lane bodies (`sample_lanes`, 2D and 3D) give `sample`'s bits at each lane, for
+    /// every orientation, several seeds and every number type: random points near and far
+    /// from the origin, points on the lattices' edges and vertices (multiples of ¼), and
+    /// non-finite ones.
     #[test]
     fn lanes_are_the_point_samples() {
-        fn check<R: Real>(noise: &OpenSimplex2, p: &[[f32; LANES]; 2]) {
+        fn check<R: Real, const D: usize>(noise: &OpenSimplex2, p: &[[f32; LANES]; D])
+        where
+            OpenSimplex2: Noise<R, D>,
+        {
             let p = p.map(|axis| axis.map(R::from_f32));
             let mut got = [R::ZERO; LANES];
-            fast_2d_lanes(noise.seed, noise.improve, &p, &mut got);
+            noise.sample_lanes(&p, &mut got);
             for l in 0..LANES {
-                let point = [p[0][l], p[1][l]];
-                let want: R = noise.sample(point);
+                let point: [R; D] = core::array::from_fn(|a| p[a][l]);
+                let want = noise.sample(point);
                 assert_eq!(
                     got[l].to_f64().to_bits(),
                     want.to_f64().to_bits(),
                     "{point:?}: {got:?}"
                 );
             }
+        }
+        fn all_types<const D: usize>(noise: &OpenSimplex2, p: &[[f32; LANES]; D])
+        where
+            OpenSimplex2: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>,
+        {
+            check::<f32, D>(noise, p);
+            check::<f64, D>(noise, p);
+            check::<I16F16, D>(noise, p);
         }
         let mut next = crate::testing::xorshift32(0x2545_F491);
         let mut unit = move || f64::from(next()) / f64::from(u32::MAX);
@@ -1350,22 +1433,22 @@ mod tests {
             -2e7,
             1e-30,
         ];
+        let mut coordinate = |round: usize| match round % 4 {
+            0 => ((unit() - 0.5) * 600.0) as f32,
+            1 => ((unit() - 0.5) * 4e6) as f32,
+            2 => ((unit() * 64.0).floor() / 4.0 - 8.0) as f32,
+            _ => specials[(unit() * specials.len() as f64) as usize % specials.len()],
+        };
         for seed in [0, -7, i64::MAX, 0x1234_5678_9ABC] {
             for improve in [Improve::Standard, Improve::XY, Improve::XZ] {
                 let noise = OpenSimplex2::new(seed).improving(improve);
                 for round in 0..400 {
-                    let p: [[f32; LANES]; 2] = core::array::from_fn(|_| {
-                        core::array::from_fn(|_| match round % 4 {
-                            0 => ((unit() - 0.5) * 600.0) as f32,
-                            1 => ((unit() - 0.5) * 4e6) as f32,
-                            // On the lattice's diagonal (fy = fx) and its vertices.
-                            2 => ((unit() * 64.0).floor() / 4.0 - 8.0) as f32,
-                            _ => specials[(unit() * specials.len() as f64) as usize % 11],
-                        })
-                    });
-                    check::<f32>(&noise, &p);
-                    check::<f64>(&noise, &p);
-                    check::<I16F16>(&noise, &p);
+                    let p2: [[f32; LANES]; 2] =
+                        core::array::from_fn(|_| core::array::from_fn(|_| coordinate(round)));
+                    all_types(&noise, &p2);
+                    let p3: [[f32; LANES]; 3] =
+                        core::array::from_fn(|_| core::array::from_fn(|_| coordinate(round)));
+                    all_types(&noise, &p3);
                 }
             }
         }
