@@ -19,3 +19,22 @@ pub fn chi2(counts: &[u32]) -> f64 {
     let e = f64::from(total) / counts.len() as f64;
     counts.iter().map(|&c| (f64::from(c) - e).powi(2) / e).sum()
 }
+
+/// Coordinates that take the special paths of a split or a skew: zeros of both signs, cell
+/// boundaries, tiny, far (beyond `i32` cells), huge and non-finite values.
+pub const SPECIAL_COORDINATES: [f32; 14] = [
+    0.0,
+    -0.0,
+    1.0,
+    -1.0,
+    0.5,
+    1e-30,
+    -1e-30,
+    -2e7,
+    3e9,
+    -3e9,
+    1e20,
+    f32::NAN,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+];

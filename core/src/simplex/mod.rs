@@ -613,21 +613,7 @@ mod tests {
             true
         }
         let mut next = crate::testing::xorshift32(0x9E37_79B9);
-        let specials = [
-            0.0,
-            -0.0,
-            1.0,
-            -1.0,
-            0.5,
-            1e-30,
-            -1e-30,
-            3e9,
-            -3e9,
-            1e20,
-            f32::NAN,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-        ];
+        let specials = crate::testing::SPECIAL_COORDINATES;
         let (mut ran, mut ran_points) = (false, false);
         for seed in [0, 1, 77, u32::MAX] {
             let hash = PrimeHash::new(seed);

@@ -619,19 +619,12 @@ fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out:
 fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out: &mut [R; LANES]) {
     let kernel = &FAST[3];
     let inverse_radius = real::<R>(kernel.inverse_radius);
-    let half = R::from_ratio(1, 1);
     let mut cell = [[0i64; 3]; LANES];
     let mut d = [[R::ZERO; 3]; LANES];
-    // `fast_3d`'s `up`: the side of the nearest vertex the point lies on, per axis.
     let mut up = [[false; 3]; LANES];
     for l in 0..LANES {
         let t = turn([p[0][l], p[1][l], p[2][l]], improve, false);
-        for a in 0..3 {
-            let (c, f) = round_split::<R>(t[a]);
-            cell[l][a] = i64::from(c);
-            d[l][a] = f;
-            up[l][a] = f >= R::ZERO;
-        }
+        (cell[l], d[l], up[l]) = nearest_3d(t);
     }
     let mut value = [R::ZERO; LANES];
     for lattice in 0..2 {
@@ -641,29 +634,11 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
             seed ^ SEED_FLIP_3D
         };
         for l in 0..LANES {
-            let (c, e, up) = (cell[l], d[l], &mut up[l]);
-            value[l] = value[l] + term(seed, c, e, inverse_radius);
-            let axis = largest(e.map(Real::abs));
-            let (mut next, mut f) = (c, e);
-            if up[axis] {
-                next[axis] += 1;
-                f[axis] = f[axis] - R::ONE;
-            } else {
-                next[axis] -= 1;
-                f[axis] = f[axis] + R::ONE;
+            for (c, e) in pair_3d(cell[l], d[l], &up[l]) {
+                value[l] = value[l] + term(seed, c, e, inverse_radius);
             }
-            value[l] = value[l] + term(seed, next, f, inverse_radius);
             if lattice == 0 {
-                // The other cubic lattice, offset by (½, ½, ½), as `fast_3d` moves to it.
-                for a in 0..3 {
-                    if up[a] {
-                        cell[l][a] += 1;
-                        d[l][a] = e[a] - half;
-                    } else {
-                        d[l][a] = e[a] + half;
-                    }
-                    up[a] = !up[a];
-                }
+                other_lattice_3d(&mut cell[l], &mut d[l], &mut up[l]);
             }
         }
     }
@@ -695,10 +670,26 @@ fn largest<R: Real, const D: usize>(v: [R; D]) -> usize {
 /// next one along the axis of the largest offset.
 #[inline(always)]
 fn fast_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G>) {
-    let half = R::from_ratio(1, 1);
+    let (mut cell, mut d, mut up) = nearest_3d::<R>(t);
+    let mut seed = seed;
+    for lattice in 0..2 {
+        for (c, e) in pair_3d(cell, d, &up) {
+            sum.vertex(seed, c, e);
+        }
+        if lattice == 1 {
+            break;
+        }
+        other_lattice_3d(&mut cell, &mut d, &mut up);
+        seed ^= SEED_FLIP_3D;
+    }
+}
+
+/// The nearest vertex of the first cubic lattice to the turned point `t`, the offset from it,
+/// and per axis the side of the vertex the point lies on (`true`: toward `cell + 1`).
+#[inline(always)]
+fn nearest_3d<R: Real>(t: [f64; 3]) -> ([i64; 3], [R; 3], [bool; 3]) {
     let mut cell = [0i64; 3];
     let mut d = [R::ZERO; 3];
-    // The side of the nearest vertex the point lies on, per axis: +1 toward cell + 1.
     let mut up = [true; 3];
     for a in 0..3 {
         let (c, f) = round_split::<R>(t[a]);
@@ -706,34 +697,39 @@ fn fast_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G
         d[a] = f;
         up[a] = f >= R::ZERO;
     }
-    let mut seed = seed;
-    for lattice in 0..2 {
-        sum.vertex(seed, cell, d);
-        let axis = largest(d.map(Real::abs));
-        let (mut next, mut e) = (cell, d);
-        if up[axis] {
-            next[axis] += 1;
-            e[axis] = e[axis] - R::ONE;
+    (cell, d, up)
+}
+
+/// [`fast_3d`]'s two vertices of one cubic lattice, with the offsets from them: the nearest
+/// (`cell`, `d`) and the next one toward the point along the axis of the largest offset.
+#[inline(always)]
+fn pair_3d<R: Real>(cell: [i64; 3], d: [R; 3], up: &[bool; 3]) -> [([i64; 3], [R; 3]); 2] {
+    let axis = largest(d.map(Real::abs));
+    let (mut next, mut e) = (cell, d);
+    if up[axis] {
+        next[axis] += 1;
+        e[axis] = e[axis] - R::ONE;
+    } else {
+        next[axis] -= 1;
+        e[axis] = e[axis] + R::ONE;
+    }
+    [(cell, d), (next, e)]
+}
+
+/// Moves [`nearest_3d`]'s vertex, offset and sides to the other cubic lattice, offset by
+/// (½, ½, ½): its vertex at position c − ½ is hashed as c, and its nearest vertex lies
+/// toward the point on every axis.
+#[inline(always)]
+fn other_lattice_3d<R: Real>(cell: &mut [i64; 3], d: &mut [R; 3], up: &mut [bool; 3]) {
+    let half = R::from_ratio(1, 1);
+    for a in 0..3 {
+        if up[a] {
+            cell[a] += 1;
+            d[a] = d[a] - half;
         } else {
-            next[axis] -= 1;
-            e[axis] = e[axis] + R::ONE;
+            d[a] = d[a] + half;
         }
-        sum.vertex(seed, next, e);
-        if lattice == 1 {
-            break;
-        }
-        // The other cubic lattice, offset by (½, ½, ½): its vertex at position c − ½ is
-        // hashed as c, and its nearest vertex lies toward the point on every axis.
-        for a in 0..3 {
-            if up[a] {
-                cell[a] += 1;
-                d[a] = d[a] - half;
-            } else {
-                d[a] = d[a] + half;
-            }
-            up[a] = !up[a];
-        }
-        seed ^= SEED_FLIP_3D;
+        up[a] = !up[a];
     }
 }
 
@@ -1426,19 +1422,7 @@ mod tests {
         }
         let mut next = crate::testing::xorshift32(0x2545_F491);
         let mut unit = move || f64::from(next()) / f64::from(u32::MAX);
-        let specials = [
-            0.0,
-            -0.0,
-            1.0,
-            -1.0,
-            0.5,
-            f32::NAN,
-            f32::INFINITY,
-            f32::NEG_INFINITY,
-            3e9,
-            -2e7,
-            1e-30,
-        ];
+        let specials = crate::testing::SPECIAL_COORDINATES;
         let mut coordinate = |round: usize| match round % 4 {
             0 => ((unit() - 0.5) * 600.0) as f32,
             1 => ((unit() - 0.5) * 4e6) as f32,
