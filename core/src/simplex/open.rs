@@ -1107,18 +1107,17 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                if $smooth {
-                    for (l, o) in out.iter_mut().enumerate() {
-                        *o = self.sample(crate::batch::lane(p, l));
+                // OpenSimplex2 in 2D and 3D has lane bodies; the rest go point by point.
+                if !$smooth {
+                    if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
+                        return fast_2d_lanes(self.seed, self.improve, p, out);
                     }
-                } else if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
-                    fast_2d_lanes(self.seed, self.improve, p, out);
-                } else if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
-                    fast_3d_lanes(self.seed, self.improve, p, out);
-                } else {
-                    for (l, o) in out.iter_mut().enumerate() {
-                        *o = self.sample(crate::batch::lane(p, l));
+                    if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
+                        return fast_3d_lanes(self.seed, self.improve, p, out);
                     }
+                }
+                for (l, o) in out.iter_mut().enumerate() {
+                    *o = self.sample(crate::batch::lane(p, l));
                 }
             }
             fn amplitude_bound(&self) -> f32 {
