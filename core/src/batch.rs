@@ -98,7 +98,13 @@ impl<R: Real, const D: usize> Grid<R, D> {
     /// The coordinate of index `i` along `axis`.
     #[inline]
     pub(crate) fn coordinate(&self, axis: usize, i: usize) -> R {
-        let i = R::from_i32(i.min(i32::MAX as usize) as i32);
+        self.at(axis, R::from_i32(i.min(i32::MAX as usize) as i32))
+    }
+
+    /// The coordinate along `axis` of the index `i` converted to `R`: the one formula of
+    /// [`coordinate`](Self::coordinate) and [`lanes`](Self::lanes).
+    #[inline(always)]
+    fn at(&self, axis: usize, i: R) -> R {
         self.origin[axis].saturating_add(i.wrapping_mul(self.step[axis]))
     }
 
@@ -110,12 +116,9 @@ impl<R: Real, const D: usize> Grid<R, D> {
     #[inline]
     pub(crate) fn lanes(&self, axis: usize, first: usize) -> [R; LANES] {
         const EXACT: usize = (1 << 15) - LANES;
-        let (origin, step) = (self.origin[axis], self.step[axis]);
         if first <= EXACT {
             let base = R::from_i32(first as i32);
-            core::array::from_fn(|l| {
-                origin.saturating_add((base + R::from_i32(l as i32)).wrapping_mul(step))
-            })
+            core::array::from_fn(|l| self.at(axis, base + R::from_i32(l as i32)))
         } else {
             core::array::from_fn(|l| self.coordinate(axis, first.saturating_add(l)))
         }
