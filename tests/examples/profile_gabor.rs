@@ -10,7 +10,11 @@ fn main() {
         noise = noise.with_orientation(Orientation::Isotropic);
     }
     let mut acc = 0.0f32;
-    for j in 0..16 {
+    let rows: usize = std::env::args()
+        .nth(2)
+        .and_then(|r| r.parse().ok())
+        .unwrap_or(16);
+    for j in 0..rows {
         for i in 0..1024 {
             acc += noise.sample(std::hint::black_box([
                 3.217 + i as f32 * 0.0737,

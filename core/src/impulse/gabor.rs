@@ -2,10 +2,11 @@
 //! §3.3; random phases as in Lagae and Drettakis 2011, §3.3): [`Gabor`], whose docs give the
 //! kernel, the variants, the envelopes and the normalisation.
 
-use super::{Impulses, Weights, walk, walk_lanes};
+use super::{Impulses, PerCell, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
 use crate::hash::{CellHash, CellRng};
 use crate::radial::{GAUSSIAN_RATE, Profile, Table, ball_volume, knots, power_in, powers};
+use crate::special::{cos_f64, q30};
 use crate::wavelet::constmath;
 use crate::wavelet::unit_normal;
 use crate::{Error, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
@@ -172,7 +173,11 @@ const MAX_MAGNITUDE: f32 = 1024.0;
 /// kernel radius along each axis) and its phase (turns).
 struct Params<R, const D: usize> {
     wave: [R; D],
+    /// The phase in turns: relative to the impulse's position for kernels of their own
+    /// direction, to its cell's corner for kernels along the noise's ([`Harmonics`]).
     phase: R,
+    /// `cos 2πφ` and `sin 2πφ` of a phase relative to the cell's corner (from [`PHASES`]).
+    cis: [R; 2],
     /// The unit direction (the wave vector over `F₀ r`), for surface noise.
     direction: [R; D],
 }
@@ -215,7 +220,8 @@ struct Params<R, const D: usize> {
 /// narrower envelope, so lobes wider than `a` says (by a fifth: measured in
 /// `tests/tests/gabor.rs`). Both envelopes are read from a table of `d²` (65 knots, Q2.30,
 /// cubic Hermite: within 3e-7 of their formulas, [`Envelope::exact`]), the harmonic from
-/// [`Real::cos_turns`].
+/// [`Real::cos_turns`]: per impulse for kernels of their own direction; per sample and cell
+/// for kernels along the noise's direction (see [Random numbers](Self#random-numbers)).
 ///
 /// # Normalisation
 ///
@@ -226,11 +232,27 @@ struct Params<R, const D: usize> {
 /// density and dimension (the 2009 paper's `(1 + e^{−2πF₀²/a²})` interference term of a
 /// phase-free kernel does not arise).
 ///
-/// Random numbers per impulse, after the walk's position draw (and uniform weight): one 32-bit
-/// draw whose top 16 bits give the phase and whose low 16 bits the angle of an isotropic or
-/// hybrid direction (bin centres `(2k + 1)/2¹⁷` turns: exact in every number type), and in 3D
-/// isotropic noise a second draw whose top 16 bits give the direction's `z` (uniform in
-/// `(−1, 1)`, which makes the direction uniform on the sphere, Archimedes).
+/// # Random numbers
+///
+/// Per impulse, after the walk's position draw (and uniform weight), one 32-bit draw:
+///
+/// * Kernels along the noise's direction `k` (the anisotropic variant, and every variant in
+///   1D): the top 8 bits give the phase `φ` relative to the corner `c` of the impulse's
+///   cell, one of 256 bin centres `(2j + 1)/512` turns, so the harmonic is `cos 2π(k·(p − c) +
+///   φ)`. That is the kernel `cos 2π(k·(p − x_i) + φ_i)` of the phase `φ_i = φ + k·(x_i − c)`
+///   relative to the impulse at `x_i`, which is uniform and independent of the impulse's
+///   position as `φ` is: the same random-phase noise, whose `cos` and `sin` of `2π k·(p − c)`
+///   are computed once per cell and sample (two [`Real::cos_turns`] per axis, turned by
+///   `±2π k_a` for the neighbouring cells), so that an impulse costs two products with its
+///   phase's `cos` and `sin` (a table of 256 in Q2.30) instead of a cosine. With 256 phases
+///   `E[cos²]` is exactly ½ and the spectrum is the continuous phases' (the covariance of a
+///   kernel with itself averages `cos 2π(θ + φ) cos 2π(θ′ + φ)` over the phases, `½ cos
+///   2π(θ − θ′)` for any 3 or more equally spaced phases).
+/// * Kernels of their own direction (isotropic and hybrid): the top 16 bits give the phase
+///   relative to the impulse and the low 16 bits the direction's angle (bin centres `(2k +
+///   1)/2¹⁷` turns: exact in every number type); in 3D isotropic noise a second draw's top 16
+///   bits give the direction's `z` (uniform in `(−1, 1)`, which makes the direction uniform on
+///   the sphere, Archimedes).
 ///
 /// # Surface noise
 ///
@@ -308,6 +330,8 @@ pub struct Gabor<const D: usize> {
     turns: Setting,
     /// `F₀ r ω`: the anisotropic wave vector in turns per kernel radius.
     wave: [Setting; D],
+    /// `[cos 2π k_a, sin 2π k_a]` for each component `k_a` of `wave` as each type rounds it.
+    turn: [[Setting; 2]; D],
     /// `K/σ`.
     scale: Setting,
 }
@@ -370,6 +394,7 @@ impl<const D: usize> Gabor<D> {
             to_cells: Setting::default(),
             turns: Setting::default(),
             wave: [Setting::default(); D],
+            turn: [[Setting::default(); 2]; D],
             scale: Setting::default(),
         }
         .derive()
@@ -392,6 +417,16 @@ impl<const D: usize> Gabor<D> {
         self.to_cells = Setting::of(to_cells);
         self.turns = Setting::of(turns);
         self.wave = core::array::from_fn(|a| Setting::of(turns * self.direction[a] as f64));
+        self.turn = self.wave.map(|k| {
+            let (float, fixed) = (k.float as f64, k.fixed.to_num::<f64>());
+            let angle = |x: f64| 2.0 * core::f64::consts::PI * x;
+            let cis = |x: f64| [libm::cos(angle(x)), libm::sin(angle(x))];
+            let (f, q) = (cis(float), cis(fixed));
+            core::array::from_fn(|i| Setting {
+                float: f[i] as f32,
+                fixed: I16F16::from_num(q[i]),
+            })
+        });
         self.scale = Setting::of(self.magnitude as f64 / self.sigma());
         self
     }
@@ -637,16 +672,19 @@ impl<const D: usize> Gabor<D> {
     #[inline]
     fn params<R: Real>(&self, rng: &mut CellRng) -> Params<R, D> {
         let draw = rng.next_u32();
-        // Bin centres of 2^16 bins: (2k + 1)/2^17 turns.
-        let turn = |bits: u32| R::from_ratio((2 * bits + 1) as i32, 17);
-        let phase = turn(draw >> 16);
-        if D == 1 || self.orientation == Orientation::Anisotropic {
+        if self.shared() {
+            // One of the PHASES' bins, relative to the cell's corner.
+            let j = (draw >> (32 - PHASE_BITS)) as usize;
             return Params {
                 wave: self.wave.map(Setting::get),
-                phase,
+                phase: R::from_ratio((2 * j + 1) as i32, PHASE_BITS + 1),
+                cis: phase_cis(j),
                 direction: self.direction.map(R::from_f32),
             };
         }
+        // Bin centres of 2^16 bins: (2k + 1)/2^17 turns.
+        let turn = |bits: u32| R::from_ratio((2 * bits + 1) as i32, 17);
+        let phase = turn(draw >> 16);
         let theta = turn(draw & 0xFFFF);
         let (c, s) = (theta.cos_turns(), (theta - R::from_ratio(1, 2)).cos_turns());
         let turns = self.turns.get::<R>();
@@ -667,20 +705,44 @@ impl<const D: usize> Gabor<D> {
         Params {
             wave,
             phase,
+            cis: [R::ONE, R::ZERO],
             direction,
         }
     }
 
-    /// Calls `kernel(delta, d², w, params)` for each impulse within reach of `p` (the
-    /// [impulse walk](crate::impulse) in cell units, each impulse's phase and direction drawn).
+    /// Whether every kernel runs along the noise's direction (the anisotropic variant, and
+    /// every variant in 1D), so that its harmonic is computed per cell ([`Harmonics`]).
     #[inline]
-    fn each_kernel<R: Real>(&self, p: [R; D], kernel: impl FnMut([R; D], R, R, &Params<R, D>)) {
+    fn shared(&self) -> bool {
+        D == 1 || self.orientation == Orientation::Anisotropic
+    }
+
+    /// The per-cell harmonics for number type `R`.
+    #[inline]
+    fn harmonics<R: Real>(&self) -> Harmonics<R, D> {
+        Harmonics {
+            on: self.shared(),
+            wave: self.wave.map(Setting::get),
+            turn: self.turn.map(|t| t.map(Setting::get)),
+        }
+    }
+
+    /// Calls `kernel(delta, d², w, params, cell)` for each impulse within reach of `p` (the
+    /// [impulse walk](crate::impulse) in cell units, each impulse's phase and direction drawn,
+    /// its cell's [`Harmonic`]).
+    #[inline]
+    fn each_kernel<R: Real>(
+        &self,
+        p: [R; D],
+        kernel: impl FnMut([R; D], R, R, &Params<R, D>, &Harmonic<R>),
+    ) {
         let prepare = |rng: &mut CellRng| self.params::<R>(rng);
         walk(
             &self.hash,
             &self.impulses,
             self.to_cells(p),
             (self.extra(), prepare),
+            &self.harmonics(),
             kernel,
         );
     }
@@ -693,7 +755,8 @@ impl<const D: usize> Gabor<D> {
     }
 }
 
-/// The harmonic's argument in turns, `wave · delta + phase`.
+/// The harmonic's argument in turns, `wave · delta + phase`, of a kernel with a direction of
+/// its own.
 #[inline]
 fn argument<R: Real, const D: usize>(params: &Params<R, D>, delta: &[R; D]) -> R {
     let mut t = params.phase;
@@ -703,13 +766,170 @@ fn argument<R: Real, const D: usize>(params: &Params<R, D>, delta: &[R; D]) -> R
     t
 }
 
+/// Bits of a phase relative to the cell's corner: [`PHASES`] has `2^PHASE_BITS` bins.
+const PHASE_BITS: u32 = 8;
+
+/// `cos 2πφ` at the centres of 256 equal bins of the phase, `φ = (2j + 1)/512` turns, in
+/// Q2.30; `sin 2πφ` is the entry a quarter turn before.
+static PHASES: [i32; 1 << PHASE_BITS] = {
+    const N: usize = 1 << PHASE_BITS;
+    let q30 = (1u64 << 30) as f64;
+    let mut t = [0i32; N];
+    let mut j = 0;
+    while j < N {
+        // cos 2πx from its quarter wave: even about ½, odd about ¼.
+        let mut x = (2 * j + 1) as f64 / (2 * N) as f64;
+        if x > 0.5 {
+            x = 1.0 - x;
+        }
+        let (v, negative) = if x > 0.25 {
+            (cos_f64(2.0 * core::f64::consts::PI * (0.5 - x)), true)
+        } else {
+            (cos_f64(2.0 * core::f64::consts::PI * x), false)
+        };
+        let magnitude = (v * q30 + 0.5) as i32;
+        t[j] = if negative { -magnitude } else { magnitude };
+        j += 1;
+    }
+    t
+};
+
+/// `[cos 2πφ, sin 2πφ]` of phase bin `j` (below `2^PHASE_BITS`).
+#[inline]
+fn phase_cis<R: Real>(j: usize) -> [R; 2] {
+    const MASK: usize = (1 << PHASE_BITS) - 1;
+    let quarter = 1 << (PHASE_BITS - 2);
+    [
+        q30(PHASES[j & MASK]),
+        q30(PHASES[j.wrapping_sub(quarter) & MASK]),
+    ]
+}
+
+/// A kernel's harmonic along the noise's direction `k` at a cell: `k·(p − c)` in turns for
+/// the point `p` and the cell's corner `c`, and its cosine and sine (of `2π` times it).
+#[derive(Clone, Copy, Debug, Default)]
+struct Harmonic<R> {
+    turns: R,
+    cos: R,
+    sin: R,
+}
+
+impl<R: Real> Harmonic<R> {
+    /// The harmonic plus another (the angles added).
+    #[inline]
+    fn plus(self, other: Self) -> Self {
+        Self {
+            turns: self.turns + other.turns,
+            cos: self.cos.mul_rn(other.cos) - self.sin.mul_rn(other.sin),
+            sin: self.sin.mul_rn(other.cos) + self.cos.mul_rn(other.sin),
+        }
+    }
+
+    /// `cos 2π(θ + φ)` and `sin 2π(θ + φ)` for this harmonic's angle `θ` and an impulse's
+    /// phase `φ` given as `[cos 2πφ, sin 2πφ]`.
+    #[inline]
+    fn at(&self, cis: &[R; 2]) -> (R, R) {
+        (
+            self.cos.mul_rn(cis[0]) - self.sin.mul_rn(cis[1]),
+            self.sin.mul_rn(cis[0]) + self.cos.mul_rn(cis[1]),
+        )
+    }
+}
+
+/// The harmonics of kernels along the noise's direction, per cell (Gabor noise's
+/// [`PerCell`]). An impulse's phase `φ` is drawn relative to its cell's corner `c`: its
+/// kernel's harmonic is `cos 2π(k·(p − c) + φ)`, which is `cos 2π(k·(p − x_i) + φ_i)` for the
+/// phase `φ_i = φ + k·(x_i − c)` relative to the impulse `x_i`, uniform as `φ` is and
+/// independent of the impulse's position: the same noise (Lagae and Drettakis 2011's random
+/// phases). So `cos` and `sin` of `2π k·(p − c)` are computed once per cell (per axis, from
+/// the point's fraction `f`: two `cos_turns` for the point's own cell, then turned by
+/// `±2π k_a` for the cells either side, then added over the axes), and each impulse only
+/// combines them with its phase's, read from [`PHASES`].
+struct Harmonics<R, const D: usize> {
+    /// Off for kernels with directions of their own.
+    on: bool,
+    /// `k`, turns per kernel radius.
+    wave: [R; D],
+    /// `[cos 2π k_a, sin 2π k_a]` per axis.
+    turn: [[R; 2]; D],
+}
+
+impl<R: Real, const D: usize> PerCell<R, D> for Harmonics<R, D> {
+    type Axis = Harmonic<R>;
+    type Cell = Harmonic<R>;
+
+    #[inline]
+    fn axis(&self, a: usize, f: R) -> [Harmonic<R>; 3] {
+        let (Some(&k), Some(&[c, s])) = (self.wave.get(a), self.turn.get(a)) else {
+            return [Harmonic::default(); 3];
+        };
+        if !self.on {
+            return [Harmonic::default(); 3];
+        }
+        let t = k.mul_rn(f);
+        let own = Harmonic {
+            turns: t,
+            cos: t.cos_turns(),
+            sin: (t - R::from_ratio(1, 2)).cos_turns(),
+        };
+        // The point is at f + 1 from the corner of the cell below, f − 1 from the one above.
+        let below = Harmonic {
+            turns: k.mul_rn(f + R::ONE),
+            cos: c,
+            sin: s,
+        };
+        let above = Harmonic {
+            turns: k.mul_rn(f - R::ONE),
+            cos: c,
+            sin: -s,
+        };
+        [
+            Harmonic {
+                turns: below.turns,
+                ..own.plus(below)
+            },
+            own,
+            Harmonic {
+                turns: above.turns,
+                ..own.plus(above)
+            },
+        ]
+    }
+
+    #[inline]
+    fn cell(&self, axes: &[Harmonic<R>; D]) -> Harmonic<R> {
+        let mut h = axes[0];
+        for &x in axes.iter().skip(1) {
+            h = h.plus(x);
+        }
+        h
+    }
+}
+
+/// `cos 2π(k·δ + φ)`, the harmonic of a kernel at offset `δ` (`cell` the harmonic of its
+/// cell when the kernels share the noise's direction).
+#[inline]
+fn harmonic<R: Real, const D: usize>(
+    shared: bool,
+    params: &Params<R, D>,
+    delta: &[R; D],
+    cell: &Harmonic<R>,
+) -> R {
+    if shared {
+        cell.at(&params.cis).0
+    } else {
+        argument(params, delta).cos_turns()
+    }
+}
+
 impl<R: Real, const D: usize> Noise<R, D> for Gabor<D> {
     #[inline]
     fn sample(&self, p: [R; D]) -> R {
         let table = self.envelope.table();
+        let shared = self.shared();
         let mut total = R::ZERO;
-        self.each_kernel(p, |delta, d2, w, params| {
-            let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
+        self.each_kernel(p, |delta, d2, w, params, cell| {
+            let h = table.at(d2).mul_rn(harmonic(shared, params, &delta, cell));
             total = total + w.mul_rn(h);
         });
         total.mul_rn(self.scale.get()).canonical()
@@ -729,19 +949,21 @@ impl<R: Real, const D: usize> Noise<R, D> for Gabor<D> {
         let k = self.to_cells.get::<R>();
         let cells = p.map(|axis| axis.map(|x| x.wrapping_mul(k)));
         let prepare = |rng: &mut CellRng| self.params::<R>(rng);
-        let shared = walk_lanes(
+        let along = self.shared();
+        let walked = walk_lanes(
             &self.hash,
             &self.impulses,
             &cells,
             (self.extra(), prepare),
-            |l, delta, d2, w, params| {
+            &self.harmonics(),
+            |l, delta, d2, w, params, cell| {
                 if let Some(t) = totals.get_mut(l) {
-                    let h = table.at(d2).mul_rn(argument(params, &delta).cos_turns());
+                    let h = table.at(d2).mul_rn(harmonic(along, params, &delta, cell));
                     *t = *t + w.mul_rn(h);
                 }
             },
         );
-        if shared {
+        if walked {
             let scale = self.scale.get::<R>();
             for (o, t) in out.iter_mut().zip(totals) {
                 *o = t.mul_rn(scale).canonical();
@@ -764,10 +986,15 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for Gabor<D> {
         let mut total = R::ZERO;
         let mut gradient = [R::ZERO; D];
         let tau = R::from_f32(core::f32::consts::TAU);
-        self.each_kernel(p, |delta, d2, w, params| {
+        let shared = self.shared();
+        self.each_kernel(p, |delta, d2, w, params, cell| {
             let (e, slope) = table.at_with_slope(d2);
-            let t = argument(params, &delta);
-            let (c, s) = (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns());
+            let (c, s) = if shared {
+                cell.at(&params.cis)
+            } else {
+                let t = argument(params, &delta);
+                (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns())
+            };
             total = total + w.mul_rn(e.mul_rn(c));
             let radial = w.mul_rn(slope.mul_rn(c));
             let along = w.mul_rn(e.mul_rn(s)).mul_rn(tau);
@@ -825,18 +1052,21 @@ impl<R: Real> ProjectedNoise<R> for Gabor<3> {
             (t.map(|c| c.div(m)), m2)
         };
         let anisotropic = self.orientation == Orientation::Anisotropic;
+        // The anisotropic kernels' phase is relative to their cell's corner (`Harmonics`):
+        // `φ + k·(p − c) + (k_t − k)·δ` in turns, with `k_t` the wave turned into the plane.
         let fixed = tangent(&self.direction.map(R::from_f32))
             .0
             .map(|c| turns.mul_rn(c));
+        let wave = self.wave.map(Setting::get::<R>);
+        let change: [R; 3] = core::array::from_fn(|a| fixed[a] - wave[a]);
         let mut total = R::ZERO;
-        self.each_kernel(p, |delta, d2, w, params| {
-            let (wave, weight) = if anisotropic {
-                (fixed, R::ONE)
+        self.each_kernel(p, |delta, d2, w, params, cell| {
+            let (wave, weight, mut arg) = if anisotropic {
+                (change, R::ONE, params.phase + cell.turns)
             } else {
                 let (t, m2) = tangent(&params.direction);
-                (t.map(|c| turns.mul_rn(c)), m2)
+                (t.map(|c| turns.mul_rn(c)), m2, params.phase)
             };
-            let mut arg = params.phase;
             for (k, d) in wave.iter().zip(&delta) {
                 arg = arg + k.mul_rn(*d);
             }
@@ -978,8 +1208,9 @@ impl<R: Real> crate::FilteredNoise<R, 2> for Gabor<2> {
             Envelope::Hann => Some(&HANN_WINDOW),
             Envelope::Truncated => None,
         };
+        let shared = self.shared();
         let mut total = R::ZERO;
-        self.each_kernel(p, |delta, d2, w, params| {
+        self.each_kernel(p, |delta, d2, w, params, cell| {
             let k = params.wave;
             let m = [
                 filter.shift[0].mul_rn(k[0]) + filter.shift[1].mul_rn(k[1]),
@@ -991,7 +1222,16 @@ impl<R: Real> crate::FilteredNoise<R, 2> for Gabor<2> {
                 Some(table) => spread.mul_rn(table.at(d2)),
                 None => spread,
             };
-            let arg = params.phase + m[0].mul_rn(delta[0]) + m[1].mul_rn(delta[1]);
+            // A phase relative to the cell's corner (`Harmonics`): `φ + k·(p − c) + (m −
+            // k)·δ`; relative to the impulse, `φ + m·δ`.
+            let arg = if shared {
+                params.phase
+                    + cell.turns
+                    + (m[0] - k[0]).mul_rn(delta[0])
+                    + (m[1] - k[1]).mul_rn(delta[1])
+            } else {
+                params.phase + m[0].mul_rn(delta[0]) + m[1].mul_rn(delta[1])
+            };
             let h = envelope.mul_rn(fade).mul_rn(arg.cos_turns());
             total = total + w.mul_rn(h);
         });
@@ -1034,6 +1274,98 @@ mod tests {
         assert!((Envelope::Truncated.table().at(0.999_999f64) - 0.05).abs() < 1e-6);
         assert_eq!(Envelope::Truncated.table().at(1.0f64), 0.0);
         assert_eq!(Envelope::Hann.table().at(1.0f64), 0.0);
+    }
+
+    /// The phase table holds `cos` and `sin` of its bin centres.
+    #[test]
+    fn phases_are_the_bin_centres() {
+        for j in 0..1 << PHASE_BITS {
+            let phase = (2 * j + 1) as f64 / 512.0 * core::f64::consts::TAU;
+            let [c, s] = phase_cis::<f64>(j);
+            assert!((c - libm::cos(phase)).abs() < 1e-9, "{j}");
+            assert!((s - libm::sin(phase)).abs() < 1e-9, "{j}");
+        }
+    }
+
+    /// Each cell's harmonic, turned from the point's own cell, is `2π k·(p − c)`'s cosine and
+    /// sine computed directly, in every dimension and for wave vectors up to the largest.
+    #[test]
+    fn cell_harmonics_are_the_direct_ones() {
+        fn case<const D: usize>(wave: [f64; D], next: &mut impl FnMut() -> u32) {
+            let h = Harmonics::<f64, D> {
+                on: true,
+                wave,
+                turn: wave.map(|k| {
+                    let a = core::f64::consts::TAU * k;
+                    [libm::cos(a), libm::sin(a)]
+                }),
+            };
+            for _ in 0..2000 {
+                let f: [f64; D] = core::array::from_fn(|_| next() as f64 / 4_294_967_296.0);
+                let shares: [[Harmonic<f64>; 3]; D] = core::array::from_fn(|a| h.axis(a, f[a]));
+                for n in 0..3usize.pow(D as u32) {
+                    let digit: [usize; D] = core::array::from_fn(|a| n / 3usize.pow(a as u32) % 3);
+                    let cell = h.cell(&core::array::from_fn(|a| shares[a][digit[a]]));
+                    // The point relative to the cell's corner: f + 1, f, f − 1.
+                    let turns: f64 = (0..D)
+                        .map(|a| wave[a] * (f[a] + 1.0 - digit[a] as f64))
+                        .sum();
+                    let angle = core::f64::consts::TAU * turns;
+                    assert!((cell.turns - turns).abs() < 1e-12, "{f:?} {digit:?}");
+                    // cos_turns' own error (2e-8), once per axis, turned exactly.
+                    let tolerance = 1e-7 * D as f64;
+                    assert!(
+                        (cell.cos - libm::cos(angle)).abs() < tolerance,
+                        "{f:?} {digit:?}"
+                    );
+                    assert!(
+                        (cell.sin - libm::sin(angle)).abs() < tolerance,
+                        "{f:?} {digit:?}"
+                    );
+                }
+            }
+        }
+        let mut next = crate::testing::xorshift32(7);
+        for wave in [0.0, 0.37, 1.0, 1.2214, -7.9, 62.5] {
+            case::<1>([wave], &mut next);
+            case::<2>([wave, 0.5 - wave], &mut next);
+            case::<3>([wave, -0.25, wave / 3.0], &mut next);
+        }
+    }
+
+    /// The noise is continuous across the cells' borders (in `f64`, within 1e-6 over a step
+    /// of 1e-9 cell): each kernel's harmonic is the same on both sides whichever cell the
+    /// point lies in, in every dimension and orientation.
+    #[test]
+    fn noise_is_continuous_across_cells() {
+        fn case<const D: usize>(noise: &Gabor<D>, next: &mut impl FnMut() -> u32) {
+            let r = noise.radius();
+            for _ in 0..300 {
+                let mut p: [f64; D] =
+                    core::array::from_fn(|_| (next() as f64 / 4_294_967_296.0 - 0.5) * 20.0 * r);
+                // Onto a cell border along one axis, then a step either side.
+                let a = next() as usize % D;
+                p[a] = libm::round(p[a] / r) * r;
+                let (mut lo, mut hi) = (p, p);
+                lo[a] -= 1e-9 * r;
+                hi[a] += 1e-9 * r;
+                let (u, v): (f64, f64) = (noise.sample(lo), noise.sample(hi));
+                assert!((u - v).abs() < 1e-6, "{p:?} along {a}: {u} against {v}");
+            }
+        }
+        let mut next = crate::testing::xorshift32(11);
+        for orientation in [Orientation::Anisotropic, Orientation::Isotropic] {
+            let at = |g: Gabor<2>| g.with_orientation(orientation);
+            case(&Gabor::<1>::new(3).with_frequency(2.5).unwrap(), &mut next);
+            case(&at(Gabor::<2>::new(3).with_angle(0.4).unwrap()), &mut next);
+            case(
+                &Gabor::<3>::new(3)
+                    .with_orientation(orientation)
+                    .with_direction([0.3, -0.5, 0.8])
+                    .unwrap(),
+                &mut next,
+            );
+        }
     }
 
     /// `∫e²` from the tables against the 2D closed form of the truncated Gaussian:

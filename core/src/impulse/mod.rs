@@ -210,6 +210,34 @@ impl Impulses {
 /// The walks' `(extra, prepare)` for kernels without random parameters of their own.
 pub(crate) const NO_PARAMS: (u32, fn(&mut CellRng)) = (0, |_| ());
 
+/// What a kernel computes once per cell rather than once per impulse, from the point's
+/// coordinates relative to the cell's corner (Gabor noise's harmonic along a shared direction).
+/// Both walks call these with the same numbers in the same order, so a cell's value is the
+/// same bits in a point walk and in a lane's share of the lanes' walk. `()` computes nothing.
+pub(crate) trait PerCell<R, const D: usize> {
+    /// One axis's share of a cell's value.
+    type Axis: Copy + Default;
+    /// A cell's value.
+    type Cell: Copy + Default;
+    /// Axis `a`'s shares for the cells below, at and above the point's own along `a`, from
+    /// the point's fraction `f` in its own cell (the point's coordinate relative to those
+    /// cells' corners is `f + 1`, `f` and `f − 1`).
+    fn axis(&self, a: usize, f: R) -> [Self::Axis; 3];
+    /// A cell's value from its share along each axis.
+    fn cell(&self, axes: &[Self::Axis; D]) -> Self::Cell;
+}
+
+impl<R, const D: usize> PerCell<R, D> for () {
+    type Axis = ();
+    type Cell = ();
+    #[inline]
+    fn axis(&self, _: usize, _: R) -> [(); 3] {
+        [(); 3]
+    }
+    #[inline]
+    fn cell(&self, _: &[(); D]) {}
+}
+
 /// Bits of an impulse's position draw per axis in `D` dimensions (at most 31 in all: the top
 /// bit is the sign of [`Weights::Sign`]).
 const fn position_bits(d: usize) -> u32 {
@@ -246,39 +274,46 @@ impl Weights {
     }
 }
 
-/// Calls `visit(delta, d², w, params)` for each impulse within distance 1 of `p` (in cell
-/// units), in a fixed order: the walk of the module docs. `visit` gets the offset from the
-/// impulse to `p`, its squared length (below 1), the weight, and what `prepare` made of the
+/// Calls `visit(delta, d², w, params, cell)` for each impulse within distance 1 of `p` (in
+/// cell units), in a fixed order: the walk of the module docs. `visit` gets the offset from the
+/// impulse to `p`, its squared length (below 1), the weight, what `prepare` made of the
 /// impulse's `extra` draws (a kernel's own random parameters: Gabor noise's phase and
-/// orientation), which `prepare` takes from the generator it is given.
+/// orientation), which `prepare` takes from the generator it is given, and the value
+/// `per_cell` computed for the impulse's cell.
 ///
 /// The `3^D` cells are visited by [`CellHash::near`]: an odometer over the axes, the first
 /// axis slowest, so the cell hash's chain (first axis folded first) shares its prefixes, and a
 /// prefix of axes whose distances alone reach 1 skips all the cells beyond it at once.
 #[inline]
-pub(crate) fn walk<R: Real, const D: usize, P>(
+pub(crate) fn walk<R: Real, const D: usize, P, K>(
     hash: &CellHash,
     impulses: &Impulses,
     p: [R; D],
     (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
-    mut visit: impl FnMut([R; D], R, R, &P),
-) {
+    per_cell: &K,
+    mut visit: impl FnMut([R; D], R, R, &P, &K::Cell),
+) where
+    K: PerCell<R, D>,
+{
     // Per axis and offset −1, 0, 1: the cell, the point's coordinate relative to the cell's
-    // corner, and the squared distance from the point to the cell.
+    // corner, the squared distance from the point to the cell, and the kernel's share.
     let mut cells = [[0u32; 3]; D];
     let mut base = [[R::ZERO; 3]; D];
     let mut gaps = [[R::ZERO; 3]; D];
+    let mut shares = [[K::Axis::default(); 3]; D];
     for a in 0..D {
         let (c, f) = p[a].split();
         let g = R::ONE - f;
         cells[a] = [c.wrapping_sub(1) as u32, c as u32, c.wrapping_add(1) as u32];
         base[a] = [f + R::ONE, f, f - R::ONE];
         gaps[a] = [f.mul_rn(f), R::ZERO, g.mul_rn(g)];
+        shares[a] = per_cell.axis(a, f);
     }
     let weight_draws = u32::from(impulses.weights == Weights::Uniform);
     hash.near(&cells, &gaps, R::ONE, |digit, key, _| {
         let mut rng = CellRng::from_key(key);
         let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
+        let cell = per_cell.cell(&core::array::from_fn(|a| shares[a][digit[a].min(2)]));
         for _ in 0..impulses.count(&mut rng) {
             let draw = rng.next_u32();
             // The offset along axis a from the impulse to the point.
@@ -296,13 +331,13 @@ pub(crate) fn walk<R: Real, const D: usize, P>(
             let w = impulses.weights.draw(draw, &mut rng);
             let mut own = rng.clone();
             rng.skip(extra);
-            visit(delta, d2, w, &prepare(&mut own));
+            visit(delta, d2, w, &prepare(&mut own), &cell);
         }
     });
 }
 
 /// [`walk`] for [`LANES`] points at once, each visit bit-identical to the point walk's for
-/// that lane and in the same order: `visit(lane, delta, d², w, params)`, an impulse's
+/// that lane and in the same order: `visit(lane, delta, d², w, params, cell)`, an impulse's
 /// `params` prepared once for all the lanes it reaches. The cells within reach of
 /// any lane are visited once for all of them (their impulses generated once), in the point
 /// walk's order (first axis slowest), which restricted to each lane's `3^D` cells is that
@@ -312,13 +347,17 @@ pub(crate) fn walk<R: Real, const D: usize, P>(
 /// Returns `false`, visiting nothing, when the lanes' cells span more than two cells along an
 /// axis (scattered points): the caller then walks each lane alone.
 #[inline]
-pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
+pub(crate) fn walk_lanes<R: Real, const D: usize, P, K>(
     hash: &CellHash,
     impulses: &Impulses,
     p: &[[R; LANES]; D],
     (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
-    mut visit: impl FnMut(usize, [R; D], R, R, &P),
-) -> bool {
+    per_cell: &K,
+    mut visit: impl FnMut(usize, [R; D], R, R, &P, &K::Cell),
+) -> bool
+where
+    K: PerCell<R, D>,
+{
     // The box of cells: one below the lowest lane's to one above the highest's, at most 4
     // along an axis. Per axis and box cell, for every lane: the lane's coordinate relative to
     // the cell's corner and its squared distance to the cell, as the point walk has them (2,
@@ -327,6 +366,7 @@ pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
     let mut side = [0usize; D];
     let mut here = [[[R::ZERO; LANES]; 4]; D];
     let mut gaps = [[[R::from_i32(2); LANES]; 4]; D];
+    let mut shares = [[[K::Axis::default(); LANES]; 4]; D];
     for a in 0..D {
         let split = p[a].map(Real::split);
         let (min, max) = split
@@ -343,19 +383,24 @@ pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
             let g = R::ONE - f;
             // The lane's own cell is box cell 1 or 2; its neighbours the ones either side.
             let at = (c.wrapping_sub(min) as usize & 1) + 1;
-            for (o, (b, d)) in [
+            let share = per_cell.axis(a, f);
+            for (o, ((b, d), x)) in [
                 (f + R::ONE, f.mul_rn(f)),
                 (f, R::ZERO),
                 (f - R::ONE, g.mul_rn(g)),
             ]
             .into_iter()
+            .zip(share)
             .enumerate()
             {
-                if let (Some(h), Some(q)) =
-                    (here[a].get_mut(at + o - 1), gaps[a].get_mut(at + o - 1))
-                {
+                if let (Some(h), Some(q), Some(s)) = (
+                    here[a].get_mut(at + o - 1),
+                    gaps[a].get_mut(at + o - 1),
+                    shares[a].get_mut(at + o - 1),
+                ) {
                     h[l] = b;
                     q[l] = d;
+                    s[l] = x;
                 }
             }
         }
@@ -385,6 +430,10 @@ pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
             .enumerate()
             .fold(0u32, |m, (l, &g)| m | (u32::from(g < R::ONE) << l));
         if reach != 0 {
+            // Every lane's value of the cell (lanes out of reach are computed and ignored).
+            let cell: [K::Cell; LANES] = core::array::from_fn(|l| {
+                per_cell.cell(&core::array::from_fn(|a| shares[a][rows[a]][l]))
+            });
             let mut rng = CellRng::from_key(chain[D - 1]);
             for _ in 0..impulses.count(&mut rng) {
                 let draw = rng.next_u32();
@@ -414,7 +463,7 @@ pub(crate) fn walk_lanes<R: Real, const D: usize, P>(
                     let l = near.trailing_zeros() as usize;
                     near &= near - 1;
                     let delta = core::array::from_fn(|a| here[a][rows[a]][l % LANES] - u[a]);
-                    visit(l, delta, d2[l % LANES], w, &params);
+                    visit(l, delta, d2[l % LANES], w, &params, &cell[l % LANES]);
                 }
             }
         }
@@ -455,7 +504,7 @@ mod tests {
             // One impulse per cell: collect each visited cell's first draw through the kernel's
             // delta (the impulse's position identifies the draw).
             let mut seen = std::vec::Vec::new();
-            walk(&hash, &impulses, p, NO_PARAMS, |delta, _, _, _| {
+            walk(&hash, &impulses, p, NO_PARAMS, &(), |delta, _, _, _, _| {
                 seen.push(delta)
             });
             let mut want = std::vec::Vec::new();

@@ -197,9 +197,16 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
     fn sample(&self, p: [R; D]) -> R {
         let kernel = self.kernel;
         let mut total = R::ZERO;
-        walk(&self.hash, &self.impulses, p, NO_PARAMS, |_, d2, w, _| {
-            total = total + w.mul_rn(kernel.at(d2));
-        });
+        walk(
+            &self.hash,
+            &self.impulses,
+            p,
+            NO_PARAMS,
+            &(),
+            |_, d2, w, _, _| {
+                total = total + w.mul_rn(kernel.at(d2));
+            },
+        );
         total
             .mul_rn(R::from_setting(self.scale, self.scale_fixed))
             .canonical()
@@ -220,7 +227,8 @@ impl<R: Real, const D: usize> Noise<R, D> for SparseConvolution<D> {
             &self.impulses,
             p,
             NO_PARAMS,
-            |l, _, d2, w, _| {
+            &(),
+            |l, _, d2, w, _, _| {
                 if let Some(t) = totals.get_mut(l) {
                     *t = *t + w.mul_rn(kernel.at(d2));
                 }
@@ -252,7 +260,8 @@ impl<R: Real, const D: usize> NoiseGradient<R, D> for SparseConvolution<D> {
             &self.impulses,
             p,
             NO_PARAMS,
-            |delta, d2, w, _| {
+            &(),
+            |delta, d2, w, _, _| {
                 let (h, slope) = kernel.at_with_slope(d2);
                 total = total + w.mul_rn(h);
                 let ws = w.mul_rn(slope);
