@@ -66,6 +66,28 @@ pub(crate) const fn cos_f64(x: f64) -> f64 {
     sum
 }
 
+/// `cos 2πx` for `0 ≤ x ≤ 1` in `f64`: [`cos_f64`] on the quarter wave, folded (even about ½,
+/// odd about ¼).
+pub(crate) const fn cos_turn_f64(x: f64) -> f64 {
+    let x = if x > 0.5 { 1.0 - x } else { x };
+    if x > 0.25 {
+        -cos_f64(2.0 * core::f64::consts::PI * (0.5 - x))
+    } else {
+        cos_f64(2.0 * core::f64::consts::PI * x)
+    }
+}
+
+/// `[cos 2πx, sin 2πx]` for any finite `x` in `f64`, without `libm`'s trigonometry (whose
+/// argument reduction tables the demo's size budget cannot hold): `x` is reduced modulo 1
+/// exactly, then [`cos_turn_f64`]. For settings, not samples: out of line.
+#[inline(never)]
+pub(crate) fn cis_turns_f64(x: f64) -> [f64; 2] {
+    let t = x - libm::floor(x);
+    // sin 2πt = cos 2π(t − ¼), with t − ¼ taken back into [0, 1) (exact).
+    let s = if t >= 0.25 { t - 0.25 } else { t + 0.75 };
+    [cos_turn_f64(t), cos_turn_f64(s)]
+}
+
 /// `e^{−x}` at the knots, Q2.30.
 static EXP_TABLE: [i32; EXP_KNOTS] = {
     let mut t = [0i32; EXP_KNOTS];
@@ -136,8 +158,10 @@ pub(crate) fn exp_neg<R: Real>(x: R) -> R {
     hermite(t, v0, d0, v1, d1).clamp_to(R::ZERO, R::ONE)
 }
 
-/// [`Real::cos_turns`].
-#[inline]
+/// [`Real::cos_turns`]. Out of line in the demo's size-bound build, where Gabor noise's
+/// walks would inline it at each of their call sites.
+#[cfg_attr(feature = "small", inline(never))]
+#[cfg_attr(not(feature = "small"), inline)]
 pub(crate) fn cos_turns<R: Real>(x: R) -> R {
     let (_, t) = x.split();
     // cos 2πt is even about ½: fold t into [0, ½] (exact: Sterbenz), then into [0, ¼] with

@@ -6,7 +6,7 @@ use super::{Impulses, PerCell, Weights, walk, walk_lanes};
 use crate::batch::{self, LANES};
 use crate::hash::{CellHash, CellRng};
 use crate::radial::{GAUSSIAN_RATE, Profile, Table, ball_volume, knots, power_in, powers};
-use crate::special::{cos_f64, q30};
+use crate::special::{cis_turns_f64, cos_turn_f64, q30};
 use crate::wavelet::constmath;
 use crate::wavelet::unit_normal;
 use crate::{Error, I16F16, Noise, NoiseGradient, ProjectedNoise, Real};
@@ -99,6 +99,20 @@ impl Setting {
     fn get<R: Real>(self) -> R {
         R::from_setting(self.float, self.fixed)
     }
+
+    /// `[cos 2πk, sin 2πk]` for this setting `k` in turns, each type's from its own rounding
+    /// of `k` (so that a kernel's harmonic is the same seen from either cell within the
+    /// type's precision).
+    #[inline(never)]
+    fn turn(self) -> [Self; 2] {
+        let f = cis_turns_f64(self.float as f64);
+        let q = cis_turns_f64(self.fixed.to_num::<f64>());
+        let of = |i: usize| Self {
+            fixed: Self::of(q[i]).fixed,
+            ..Self::of(f[i])
+        };
+        [of(0), of(1)]
+    }
 }
 
 /// Gabor noise's parameters, for building it in one step from a description (a chain of
@@ -173,10 +187,11 @@ const MAX_MAGNITUDE: f32 = 1024.0;
 /// kernel radius along each axis) and its phase (turns).
 struct Params<R, const D: usize> {
     wave: [R; D],
-    /// The phase in turns: relative to the impulse's position for kernels of their own
-    /// direction, to its cell's corner for kernels along the noise's ([`Harmonics`]).
+    /// The phase in turns relative to the impulse's position, for kernels of their own
+    /// direction (0 for kernels along the noise's, whose phase is `cis`).
     phase: R,
-    /// `cos 2πφ` and `sin 2πφ` of a phase relative to the cell's corner (from [`PHASES`]).
+    /// `cos 2πφ` and `sin 2πφ` of the phase relative to the cell's corner, for kernels along
+    /// the noise's direction (from [`PHASES`]; `[1, 0]` for the others).
     cis: [R; 2],
     /// The unit direction (the wave vector over `F₀ r`), for surface noise.
     direction: [R; D],
@@ -237,14 +252,14 @@ struct Params<R, const D: usize> {
 /// Per impulse, after the walk's position draw (and uniform weight), one 32-bit draw:
 ///
 /// * Kernels along the noise's direction `k` (the anisotropic variant, and every variant in
-///   1D): the top 8 bits give the phase `φ` relative to the corner `c` of the impulse's
-///   cell, one of 256 bin centres `(2j + 1)/512` turns, so the harmonic is `cos 2π(k·(p − c) +
+///   1D): the top 6 bits give the phase `φ` relative to the corner `c` of the impulse's
+///   cell, one of 64 bin centres `(2j + 1)/128` turns, so the harmonic is `cos 2π(k·(p − c) +
 ///   φ)`. That is the kernel `cos 2π(k·(p − x_i) + φ_i)` of the phase `φ_i = φ + k·(x_i − c)`
 ///   relative to the impulse at `x_i`, which is uniform and independent of the impulse's
 ///   position as `φ` is: the same random-phase noise, whose `cos` and `sin` of `2π k·(p − c)`
 ///   are computed once per cell and sample (two [`Real::cos_turns`] per axis, turned by
 ///   `±2π k_a` for the neighbouring cells), so that an impulse costs two products with its
-///   phase's `cos` and `sin` (a table of 256 in Q2.30) instead of a cosine. With 256 phases
+///   phase's `cos` and `sin` (a table of 64 in Q2.30) instead of a cosine. With 64 phases
 ///   `E[cos²]` is exactly ½ and the spectrum is the continuous phases' (the covariance of a
 ///   kernel with itself averages `cos 2π(θ + φ) cos 2π(θ′ + φ)` over the phases, `½ cos
 ///   2π(θ − θ′)` for any 3 or more equally spaced phases).
@@ -417,16 +432,9 @@ impl<const D: usize> Gabor<D> {
         self.to_cells = Setting::of(to_cells);
         self.turns = Setting::of(turns);
         self.wave = core::array::from_fn(|a| Setting::of(turns * self.direction[a] as f64));
-        self.turn = self.wave.map(|k| {
-            let (float, fixed) = (k.float as f64, k.fixed.to_num::<f64>());
-            let angle = |x: f64| 2.0 * core::f64::consts::PI * x;
-            let cis = |x: f64| [libm::cos(angle(x)), libm::sin(angle(x))];
-            let (f, q) = (cis(float), cis(fixed));
-            core::array::from_fn(|i| Setting {
-                float: f[i] as f32,
-                fixed: I16F16::from_num(q[i]),
-            })
-        });
+        for (turn, k) in self.turn.iter_mut().zip(&self.wave) {
+            *turn = k.turn();
+        }
         self.scale = Setting::of(self.magnitude as f64 / self.sigma());
         self
     }
@@ -677,7 +685,7 @@ impl<const D: usize> Gabor<D> {
             let j = (draw >> (32 - PHASE_BITS)) as usize;
             return Params {
                 wave: self.wave.map(Setting::get),
-                phase: R::from_ratio((2 * j + 1) as i32, PHASE_BITS + 1),
+                phase: R::ZERO,
                 cis: phase_cis(j),
                 direction: self.direction.map(R::from_f32),
             };
@@ -717,13 +725,13 @@ impl<const D: usize> Gabor<D> {
         D == 1 || self.orientation == Orientation::Anisotropic
     }
 
-    /// The per-cell harmonics for number type `R`.
+    /// The per-cell harmonics.
     #[inline]
-    fn harmonics<R: Real>(&self) -> Harmonics<R, D> {
+    fn harmonics(&self) -> Harmonics<'_, D> {
         Harmonics {
             on: self.shared(),
-            wave: self.wave.map(Setting::get),
-            turn: self.turn.map(|t| t.map(Setting::get)),
+            wave: &self.wave,
+            turn: &self.turn,
         }
     }
 
@@ -767,9 +775,9 @@ fn argument<R: Real, const D: usize>(params: &Params<R, D>, delta: &[R; D]) -> R
 }
 
 /// Bits of a phase relative to the cell's corner: [`PHASES`] has `2^PHASE_BITS` bins.
-const PHASE_BITS: u32 = 8;
+const PHASE_BITS: u32 = 6;
 
-/// `cos 2πφ` at the centres of 256 equal bins of the phase, `φ = (2j + 1)/512` turns, in
+/// `cos 2πφ` at the centres of 64 equal bins of the phase, `φ = (2j + 1)/128` turns, in
 /// Q2.30; `sin 2πφ` is the entry a quarter turn before.
 static PHASES: [i32; 1 << PHASE_BITS] = {
     const N: usize = 1 << PHASE_BITS;
@@ -777,18 +785,10 @@ static PHASES: [i32; 1 << PHASE_BITS] = {
     let mut t = [0i32; N];
     let mut j = 0;
     while j < N {
-        // cos 2πx from its quarter wave: even about ½, odd about ¼.
-        let mut x = (2 * j + 1) as f64 / (2 * N) as f64;
-        if x > 0.5 {
-            x = 1.0 - x;
-        }
-        let (v, negative) = if x > 0.25 {
-            (cos_f64(2.0 * core::f64::consts::PI * (0.5 - x)), true)
-        } else {
-            (cos_f64(2.0 * core::f64::consts::PI * x), false)
-        };
-        let magnitude = (v * q30 + 0.5) as i32;
-        t[j] = if negative { -magnitude } else { magnitude };
+        let v = cos_turn_f64((2 * j + 1) as f64 / (2 * N) as f64);
+        // Rounded to nearest, half away from 0 (symmetric about the zeros).
+        let magnitude = ((if v < 0.0 { -v } else { v }) * q30 + 0.5) as i32;
+        t[j] = if v < 0.0 { -magnitude } else { magnitude };
         j += 1;
     }
     t
@@ -805,11 +805,10 @@ fn phase_cis<R: Real>(j: usize) -> [R; 2] {
     ]
 }
 
-/// A kernel's harmonic along the noise's direction `k` at a cell: `k·(p − c)` in turns for
-/// the point `p` and the cell's corner `c`, and its cosine and sine (of `2π` times it).
+/// A kernel's harmonic along the noise's direction `k` at a cell: `cos` and `sin` of
+/// `2π k·(p − c)` for the point `p` and the cell's corner `c`.
 #[derive(Clone, Copy, Debug, Default)]
 struct Harmonic<R> {
-    turns: R,
     cos: R,
     sin: R,
 }
@@ -819,7 +818,6 @@ impl<R: Real> Harmonic<R> {
     #[inline]
     fn plus(self, other: Self) -> Self {
         Self {
-            turns: self.turns + other.turns,
             cos: self.cos.mul_rn(other.cos) - self.sin.mul_rn(other.sin),
             sin: self.sin.mul_rn(other.cos) + self.cos.mul_rn(other.sin),
         }
@@ -834,6 +832,14 @@ impl<R: Real> Harmonic<R> {
             self.sin.mul_rn(cis[0]) + self.cos.mul_rn(cis[1]),
         )
     }
+
+    /// `cos 2π(θ + φ + u)`: [`at`](Self::at) turned by `u` turns more (the filtered and the
+    /// surface kernels, whose wave differs from the cells' by `u/δ`).
+    #[inline]
+    fn shifted(&self, cis: &[R; 2], u: R) -> R {
+        let (c, s) = self.at(cis);
+        c.mul_rn(u.cos_turns()) - s.mul_rn((u - R::from_ratio(1, 2)).cos_turns())
+    }
 }
 
 /// The harmonics of kernels along the noise's direction, per cell (Gabor noise's
@@ -845,64 +851,51 @@ impl<R: Real> Harmonic<R> {
 /// the point's fraction `f`: two `cos_turns` for the point's own cell, then turned by
 /// `±2π k_a` for the cells either side, then added over the axes), and each impulse only
 /// combines them with its phase's, read from [`PHASES`].
-struct Harmonics<R, const D: usize> {
+struct Harmonics<'a, const D: usize> {
     /// Off for kernels with directions of their own.
     on: bool,
     /// `k`, turns per kernel radius.
-    wave: [R; D],
+    wave: &'a [Setting; D],
     /// `[cos 2π k_a, sin 2π k_a]` per axis.
-    turn: [[R; 2]; D],
+    turn: &'a [[Setting; 2]; D],
 }
 
-impl<R: Real, const D: usize> PerCell<R, D> for Harmonics<R, D> {
-    type Axis = Harmonic<R>;
-    type Cell = Harmonic<R>;
+impl<R: Real, const D: usize> PerCell<R, D> for Harmonics<'_, D> {
+    type Share = Harmonic<R>;
 
-    #[inline]
+    // Out of line in the demo's size-bound build (each walk would inline two `cos_turns`).
+    #[cfg_attr(feature = "small", inline(never))]
+    #[cfg_attr(not(feature = "small"), inline)]
     fn axis(&self, a: usize, f: R) -> [Harmonic<R>; 3] {
-        let (Some(&k), Some(&[c, s])) = (self.wave.get(a), self.turn.get(a)) else {
+        let (Some(k), Some([c, s])) = (self.wave.get(a), self.turn.get(a)) else {
             return [Harmonic::default(); 3];
         };
         if !self.on {
             return [Harmonic::default(); 3];
         }
+        let (k, c, s) = (k.get::<R>(), c.get::<R>(), s.get::<R>());
         let t = k.mul_rn(f);
-        let own = Harmonic {
-            turns: t,
-            cos: t.cos_turns(),
-            sin: (t - R::from_ratio(1, 2)).cos_turns(),
-        };
-        // The point is at f + 1 from the corner of the cell below, f − 1 from the one above.
-        let below = Harmonic {
-            turns: k.mul_rn(f + R::ONE),
-            cos: c,
-            sin: s,
-        };
-        let above = Harmonic {
-            turns: k.mul_rn(f - R::ONE),
-            cos: c,
-            sin: -s,
-        };
+        let (cos, sin) = (t.cos_turns(), (t - R::from_ratio(1, 2)).cos_turns());
+        // The point is at f + 1 from the corner of the cell below, f − 1 from the one above:
+        // the angle turned by +2πk and −2πk (the products shared; `Harmonic::plus` would
+        // compute the same numbers).
+        let (cc, ss, sc, cs) = (cos.mul_rn(c), sin.mul_rn(s), sin.mul_rn(c), cos.mul_rn(s));
         [
             Harmonic {
-                turns: below.turns,
-                ..own.plus(below)
+                cos: cc - ss,
+                sin: sc + cs,
             },
-            own,
+            Harmonic { cos, sin },
             Harmonic {
-                turns: above.turns,
-                ..own.plus(above)
+                cos: cc + ss,
+                sin: sc - cs,
             },
         ]
     }
 
     #[inline]
-    fn cell(&self, axes: &[Harmonic<R>; D]) -> Harmonic<R> {
-        let mut h = axes[0];
-        for &x in axes.iter().skip(1) {
-            h = h.plus(x);
-        }
-        h
+    fn join(&self, before: Harmonic<R>, share: Harmonic<R>) -> Harmonic<R> {
+        if self.on { before.plus(share) } else { before }
     }
 }
 
@@ -1053,7 +1046,8 @@ impl<R: Real> ProjectedNoise<R> for Gabor<3> {
         };
         let anisotropic = self.orientation == Orientation::Anisotropic;
         // The anisotropic kernels' phase is relative to their cell's corner (`Harmonics`):
-        // `φ + k·(p − c) + (k_t − k)·δ` in turns, with `k_t` the wave turned into the plane.
+        // their argument is `k·(p − c) + φ + (k_t − k)·δ` in turns, with `k_t` the wave
+        // turned into the plane.
         let fixed = tangent(&self.direction.map(R::from_f32))
             .0
             .map(|c| turns.mul_rn(c));
@@ -1061,16 +1055,21 @@ impl<R: Real> ProjectedNoise<R> for Gabor<3> {
         let change: [R; 3] = core::array::from_fn(|a| fixed[a] - wave[a]);
         let mut total = R::ZERO;
         self.each_kernel(p, |delta, d2, w, params, cell| {
-            let (wave, weight, mut arg) = if anisotropic {
-                (change, R::ONE, params.phase + cell.turns)
+            let dot = |wave: &[R; 3]| {
+                let mut u = R::ZERO;
+                for (k, d) in wave.iter().zip(&delta) {
+                    u = u + k.mul_rn(*d);
+                }
+                u
+            };
+            let (harmonic, weight) = if anisotropic {
+                (cell.shifted(&params.cis, dot(&change)), R::ONE)
             } else {
                 let (t, m2) = tangent(&params.direction);
-                (t.map(|c| turns.mul_rn(c)), m2, params.phase)
+                let wave = t.map(|c| turns.mul_rn(c));
+                ((params.phase + dot(&wave)).cos_turns(), m2)
             };
-            for (k, d) in wave.iter().zip(&delta) {
-                arg = arg + k.mul_rn(*d);
-            }
-            let h = table.at(d2).mul_rn(arg.cos_turns());
+            let h = table.at(d2).mul_rn(harmonic);
             total = total + w.mul_rn(weight).mul_rn(h);
         });
         let gain = match self.orientation {
@@ -1222,17 +1221,15 @@ impl<R: Real> crate::FilteredNoise<R, 2> for Gabor<2> {
                 Some(table) => spread.mul_rn(table.at(d2)),
                 None => spread,
             };
-            // A phase relative to the cell's corner (`Harmonics`): `φ + k·(p − c) + (m −
-            // k)·δ`; relative to the impulse, `φ + m·δ`.
-            let arg = if shared {
-                params.phase
-                    + cell.turns
-                    + (m[0] - k[0]).mul_rn(delta[0])
-                    + (m[1] - k[1]).mul_rn(delta[1])
+            // A phase relative to the cell's corner (`Harmonics`): the argument `k·(p − c) +
+            // φ + (m − k)·δ`; relative to the impulse, `φ + m·δ`.
+            let harmonic = if shared {
+                let u = (m[0] - k[0]).mul_rn(delta[0]) + (m[1] - k[1]).mul_rn(delta[1]);
+                cell.shifted(&params.cis, u)
             } else {
-                params.phase + m[0].mul_rn(delta[0]) + m[1].mul_rn(delta[1])
+                (params.phase + m[0].mul_rn(delta[0]) + m[1].mul_rn(delta[1])).cos_turns()
             };
-            let h = envelope.mul_rn(fade).mul_rn(arg.cos_turns());
+            let h = envelope.mul_rn(fade).mul_rn(harmonic);
             total = total + w.mul_rn(h);
         });
         total
@@ -1280,7 +1277,7 @@ mod tests {
     #[test]
     fn phases_are_the_bin_centres() {
         for j in 0..1 << PHASE_BITS {
-            let phase = (2 * j + 1) as f64 / 512.0 * core::f64::consts::TAU;
+            let phase = (2 * j + 1) as f64 / (2 << PHASE_BITS) as f64 * core::f64::consts::TAU;
             let [c, s] = phase_cis::<f64>(j);
             assert!((c - libm::cos(phase)).abs() < 1e-9, "{j}");
             assert!((s - libm::sin(phase)).abs() < 1e-9, "{j}");
@@ -1292,28 +1289,35 @@ mod tests {
     #[test]
     fn cell_harmonics_are_the_direct_ones() {
         fn case<const D: usize>(wave: [f64; D], next: &mut impl FnMut() -> u32) {
-            let h = Harmonics::<f64, D> {
+            // Waves exact in f32 (the settings' float); turns rounded to f32 from f64.
+            let setting = |v: f64| Setting {
+                float: v as f32,
+                fixed: I16F16::ZERO,
+            };
+            let turn = wave.map(|k| cis_turns_f64(k).map(setting));
+            let wave_settings = wave.map(setting);
+            let h = Harmonics::<D> {
                 on: true,
-                wave,
-                turn: wave.map(|k| {
-                    let a = core::f64::consts::TAU * k;
-                    [libm::cos(a), libm::sin(a)]
-                }),
+                wave: &wave_settings,
+                turn: &turn,
             };
             for _ in 0..2000 {
                 let f: [f64; D] = core::array::from_fn(|_| next() as f64 / 4_294_967_296.0);
                 let shares: [[Harmonic<f64>; 3]; D] = core::array::from_fn(|a| h.axis(a, f[a]));
                 for n in 0..3usize.pow(D as u32) {
                     let digit: [usize; D] = core::array::from_fn(|a| n / 3usize.pow(a as u32) % 3);
-                    let cell = h.cell(&core::array::from_fn(|a| shares[a][digit[a]]));
+                    let mut cell: Harmonic<f64> = shares[0][digit[0]];
+                    for a in 1..D {
+                        cell = h.join(cell, shares[a][digit[a]]);
+                    }
                     // The point relative to the cell's corner: f + 1, f, f − 1.
                     let turns: f64 = (0..D)
                         .map(|a| wave[a] * (f[a] + 1.0 - digit[a] as f64))
                         .sum();
                     let angle = core::f64::consts::TAU * turns;
-                    assert!((cell.turns - turns).abs() < 1e-12, "{f:?} {digit:?}");
-                    // cos_turns' own error (2e-8), once per axis, turned exactly.
-                    let tolerance = 1e-7 * D as f64;
+                    // cos_turns' own error (2e-8) and the turn's rounding to f32 (6e-8),
+                    // per axis.
+                    let tolerance = 2e-7 * D as f64;
                     assert!(
                         (cell.cos - libm::cos(angle)).abs() < tolerance,
                         "{f:?} {digit:?}"
@@ -1326,10 +1330,10 @@ mod tests {
             }
         }
         let mut next = crate::testing::xorshift32(7);
-        for wave in [0.0, 0.37, 1.0, 1.2214, -7.9, 62.5] {
+        for wave in [0.0, 0.375, 1.0, 1.2109375, -7.875, 62.5] {
             case::<1>([wave], &mut next);
             case::<2>([wave, 0.5 - wave], &mut next);
-            case::<3>([wave, -0.25, wave / 3.0], &mut next);
+            case::<3>([wave, -0.25, wave / 4.0], &mut next);
         }
     }
 

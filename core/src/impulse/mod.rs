@@ -211,31 +211,30 @@ impl Impulses {
 pub(crate) const NO_PARAMS: (u32, fn(&mut CellRng)) = (0, |_| ());
 
 /// What a kernel computes once per cell rather than once per impulse, from the point's
-/// coordinates relative to the cell's corner (Gabor noise's harmonic along a shared direction).
-/// Both walks call these with the same numbers in the same order, so a cell's value is the
-/// same bits in a point walk and in a lane's share of the lanes' walk. `()` computes nothing.
+/// coordinates relative to the cell's corner (Gabor noise's harmonic along a shared direction):
+/// a share per axis, joined over the axes in order, `join(join(s₀, s₁), s₂)`. Both walks
+/// compute the same joins of the same numbers, so a cell's value is the same bits in a point
+/// walk (which keeps the joins of the axes its odometer has not moved) and in a lane's share
+/// of the lanes' walk. `()` computes nothing.
 pub(crate) trait PerCell<R, const D: usize> {
-    /// One axis's share of a cell's value.
-    type Axis: Copy + Default;
-    /// A cell's value.
-    type Cell: Copy + Default;
+    /// One axis's share of a cell's value, and the join of the first axes' shares.
+    type Share: Copy + Default;
     /// Axis `a`'s shares for the cells below, at and above the point's own along `a`, from
     /// the point's fraction `f` in its own cell (the point's coordinate relative to those
     /// cells' corners is `f + 1`, `f` and `f − 1`).
-    fn axis(&self, a: usize, f: R) -> [Self::Axis; 3];
-    /// A cell's value from its share along each axis.
-    fn cell(&self, axes: &[Self::Axis; D]) -> Self::Cell;
+    fn axis(&self, a: usize, f: R) -> [Self::Share; 3];
+    /// The join of the axes before one with that axis's share.
+    fn join(&self, before: Self::Share, share: Self::Share) -> Self::Share;
 }
 
 impl<R, const D: usize> PerCell<R, D> for () {
-    type Axis = ();
-    type Cell = ();
+    type Share = ();
     #[inline]
     fn axis(&self, _: usize, _: R) -> [(); 3] {
         [(); 3]
     }
     #[inline]
-    fn cell(&self, _: &[(); D]) {}
+    fn join(&self, _: (), _: ()) {}
 }
 
 /// Bits of an impulse's position draw per axis in `D` dimensions (at most 31 in all: the top
@@ -291,7 +290,7 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
     p: [R; D],
     (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
     per_cell: &K,
-    mut visit: impl FnMut([R; D], R, R, &P, &K::Cell),
+    mut visit: impl FnMut([R; D], R, R, &P, &K::Share),
 ) where
     K: PerCell<R, D>,
 {
@@ -300,7 +299,7 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
     let mut cells = [[0u32; 3]; D];
     let mut base = [[R::ZERO; 3]; D];
     let mut gaps = [[R::ZERO; 3]; D];
-    let mut shares = [[K::Axis::default(); 3]; D];
+    let mut shares = [[K::Share::default(); 3]; D];
     for a in 0..D {
         let (c, f) = p[a].split();
         let g = R::ONE - f;
@@ -310,10 +309,26 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
         shares[a] = per_cell.axis(a, f);
     }
     let weight_draws = u32::from(impulses.weights == Weights::Uniform);
+    // The joins of the shares of axes 0..=a at the last cell's digits.
+    let mut joined = [K::Share::default(); D];
+    let mut last = [usize::MAX; D];
     hash.near(&cells, &gaps, R::ONE, |digit, key, _| {
         let mut rng = CellRng::from_key(key);
         let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
-        let cell = per_cell.cell(&core::array::from_fn(|a| shares[a][digit[a].min(2)]));
+        let mut moved = false;
+        for a in 0..D {
+            let d = digit[a].min(2);
+            moved |= d != last[a];
+            if moved {
+                let share = shares[a][d];
+                joined[a] = match a.checked_sub(1) {
+                    Some(b) => per_cell.join(joined[b % D], share),
+                    None => share,
+                };
+                last[a] = d;
+            }
+        }
+        let cell = joined[D - 1];
         for _ in 0..impulses.count(&mut rng) {
             let draw = rng.next_u32();
             // The offset along axis a from the impulse to the point.
@@ -353,7 +368,7 @@ pub(crate) fn walk_lanes<R: Real, const D: usize, P, K>(
     p: &[[R; LANES]; D],
     (extra, mut prepare): (u32, impl FnMut(&mut CellRng) -> P),
     per_cell: &K,
-    mut visit: impl FnMut(usize, [R; D], R, R, &P, &K::Cell),
+    mut visit: impl FnMut(usize, [R; D], R, R, &P, &K::Share),
 ) -> bool
 where
     K: PerCell<R, D>,
@@ -366,7 +381,7 @@ where
     let mut side = [0usize; D];
     let mut here = [[[R::ZERO; LANES]; 4]; D];
     let mut gaps = [[[R::from_i32(2); LANES]; 4]; D];
-    let mut shares = [[[K::Axis::default(); LANES]; 4]; D];
+    let mut shares = [[[K::Share::default(); LANES]; 4]; D];
     for a in 0..D {
         let split = p[a].map(Real::split);
         let (min, max) = split
@@ -431,8 +446,12 @@ where
             .fold(0u32, |m, (l, &g)| m | (u32::from(g < R::ONE) << l));
         if reach != 0 {
             // Every lane's value of the cell (lanes out of reach are computed and ignored).
-            let cell: [K::Cell; LANES] = core::array::from_fn(|l| {
-                per_cell.cell(&core::array::from_fn(|a| shares[a][rows[a]][l]))
+            let cell: [K::Share; LANES] = core::array::from_fn(|l| {
+                let mut joined = shares[0][rows[0]][l];
+                for (a, &row) in rows.iter().enumerate().skip(1) {
+                    joined = per_cell.join(joined, shares[a][row][l]);
+                }
+                joined
             });
             let mut rng = CellRng::from_key(chain[D - 1]);
             for _ in 0..impulses.count(&mut rng) {
