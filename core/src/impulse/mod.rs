@@ -25,7 +25,10 @@
 //! 5. Impulses at distance 1 or more add nothing; the others add their weight times the kernel
 //!    at the squared distance. A kernel that needs more random numbers per impulse (Gabor
 //!    noise's orientation and phase) declares how many, and gets them from the same cell
-//!    generator at a place that does not depend on which impulses were skipped.
+//!    generator at a place that does not depend on which impulses were skipped. What a
+//!    kernel computes once per cell rather than per impulse (Gabor noise's harmonic along a
+//!    shared direction) is a `PerCell`: a share per axis from the point's fraction, joined
+//!    over the axes.
 //!
 //! Every step is integer arithmetic or the number type's `+ − ×` on fractions in `(−2, 2)`,
 //! so a value is the same on every target, and fixed point cannot overflow whatever the
@@ -321,6 +324,7 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
             moved |= d != last[a];
             if moved {
                 let share = shares[a][d];
+                // `b % D` is `b` (below `a`); it says so to the compiler (no bounds check).
                 joined[a] = match a.checked_sub(1) {
                     Some(b) => per_cell.join(joined[b % D], share),
                     None => share,
