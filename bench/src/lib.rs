@@ -63,7 +63,7 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 32] = [
+pub const FUNCTIONS: [&str; 33] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
@@ -93,6 +93,7 @@ pub const FUNCTIONS: [&str; 32] = [
     "flow-2d",
     "opensimplex2-2d",
     "opensimplex2-3d",
+    "opensimplex2s-2d",
     "opensimplex2s-3d",
     "cellular-2d",
     "cellular-3d",
@@ -330,10 +331,17 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("opensimplex2-2d", "bandnoise-batch") => l.batch::<_, 2>(OpenSimplex2::new(0)),
         ("opensimplex2-3d", "bandnoise") => l.point::<_, 3>(OpenSimplex2::new(0)),
         ("opensimplex2-3d", "bandnoise-batch") => l.batch::<_, 3>(OpenSimplex2::new(0)),
+        ("opensimplex2s-2d", "bandnoise") => l.point::<_, 2>(OpenSimplex2S::new(0)),
+        ("opensimplex2s-2d", "bandnoise-batch") => l.batch::<_, 2>(OpenSimplex2S::new(0)),
         ("opensimplex2s-3d", "bandnoise") => l.point::<_, 3>(OpenSimplex2S::new(0)),
         ("opensimplex2s-3d", "bandnoise-batch") => l.batch::<_, 3>(OpenSimplex2S::new(0)),
-        ("opensimplex2-2d", "fastnoise-lite") => {
-            let n = fast(NoiseType::OpenSimplex2, None);
+        ("opensimplex2-2d" | "opensimplex2s-2d", "fastnoise-lite") => {
+            let kind = if function == "opensimplex2-2d" {
+                NoiseType::OpenSimplex2
+            } else {
+                NoiseType::OpenSimplex2S
+            };
+            let n = fast(kind, None);
             l.peer2(move |x, y| n.get_noise_2d(x, y))
         }
         ("opensimplex2-3d" | "opensimplex2s-3d", "fastnoise-lite") => {

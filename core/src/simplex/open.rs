@@ -402,17 +402,17 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
         }
     }
 
-    /// Adds the vertex at `cell` (hashed with `seed`) and offset `d` if it is within reach
-    /// (else computes no hash), and says whether it was. Out of line with the `small`
+    /// Adds the vertex of hash key `key` ([`key`]) at offset `d` if it is within reach (else
+    /// computes no hash), and says whether it was. Out of line with the `small`
     /// feature: 3D OpenSimplex2S alone has 14 vertex sites.
     #[cfg_attr(feature = "small", inline(never))]
     #[cfg_attr(not(feature = "small"), inline)]
-    fn add(&mut self, seed: i64, cell: [i64; D], d: [R; D]) -> bool {
+    fn add(&mut self, key: i64, d: [R; D]) -> bool {
         let tau = reach(d, self.inverse_radius);
         if tau <= R::ZERO {
             return false;
         }
-        let (g, dot) = hash_dot(seed, cell, d);
+        let (g, dot) = hash_dot(key, d);
         let tau2 = tau.mul_fraction(tau);
         let tau4 = tau2.mul_fraction(tau2);
         self.value = self.value + tau4.mul_fraction(dot);
@@ -435,8 +435,8 @@ impl<R: Real, const D: usize, const GRADIENT: bool> Sum<R, D, GRADIENT> {
 
     /// [`add`](Self::add) where the caller needs no answer.
     #[inline(always)]
-    fn vertex(&mut self, seed: i64, cell: [i64; D], d: [R; D]) {
-        self.add(seed, cell, d);
+    fn vertex(&mut self, key: i64, d: [R; D]) {
+        self.add(key, d);
     }
 }
 
@@ -451,14 +451,28 @@ fn reach<R: Real, const D: usize>(d: [R; D], inverse_radius: R) -> R {
     R::ONE - q.mul_fraction(inverse_radius)
 }
 
-/// The gradient `g` of the vertex `cell` (hashed with `seed`) and `g·d`.
+/// The hash key of the vertex `cell` for `seed`: `seed` xor each coordinate times its
+/// axis's prime (the key's parts per axis can be computed apart and joined by xor).
 #[inline(always)]
-fn hash_dot<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D]) -> ([R; D], R) {
+fn key<const D: usize>(seed: i64, cell: [i64; D]) -> i64 {
     let mut h = seed;
-    for a in 0..D {
-        h ^= cell[a].wrapping_mul(PRIME[a]);
+    for (a, &c) in cell.iter().enumerate() {
+        h ^= share(a, c);
     }
-    let g = gradient::<R, D>(h.wrapping_mul(HASH_MULTIPLIER));
+    h
+}
+
+/// Axis `a`'s part of a vertex's hash [`key`].
+#[inline(always)]
+fn share(a: usize, c: i64) -> i64 {
+    c.wrapping_mul(PRIME[a])
+}
+
+/// The gradient `g` of the vertex of hash key `key` and its dot product `g·d` with the
+/// offset `d`.
+#[inline(always)]
+fn hash_dot<R: Real, const D: usize>(key: i64, d: [R; D]) -> ([R; D], R) {
+    let g = gradient::<R, D>(key.wrapping_mul(HASH_MULTIPLIER));
     // |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
     let mut dot = R::ZERO;
     for a in 0..D {
@@ -471,10 +485,10 @@ fn hash_dot<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D]) -> ([
 /// `add` adds nothing: a sum starts at +0 and so is never −0, and adding ±0 to it changes
 /// nothing). For the lane bodies, which compute every vertex of every lane.
 #[inline(always)]
-fn term<R: Real, const D: usize>(seed: i64, cell: [i64; D], d: [R; D], inverse_radius: R) -> R {
+fn term<R: Real, const D: usize>(key: i64, d: [R; D], inverse_radius: R) -> R {
     let tau = reach(d, inverse_radius);
     let tau = if tau > R::ZERO { tau } else { R::ZERO };
-    let (_, dot) = hash_dot(seed, cell, d);
+    let (_, dot) = hash_dot(key, d);
     let tau2 = tau.mul_fraction(tau);
     tau2.mul_fraction(tau2).mul_fraction(dot)
 }
@@ -545,21 +559,34 @@ fn body_2d<R: Real, const G: bool>(seed: i64, t: [f64; 2], smooth: bool, sum: &m
     let unskew = real::<R>(UNSKEW_2D);
     let d0 = unskewed_base(fx, fy, unskew);
     let mut corner =
-        |step: [i32; 2]| sum.vertex(seed, plus(cell, step), unskewed(d0, step, unskew));
+        |step: [i32; 2]| sum.vertex(key(seed, plus(cell, step)), unskewed(d0, step, unskew));
     corner([0, 0]);
     corner([1, 1]);
     if !smooth {
         corner(third_2d(fx, fy));
     } else {
-        // The reference's nested choices, on the skewed fractions.
-        let xmy = fx - fy;
-        if fx + fy > R::ONE {
-            corner(if fx + xmy > R::ONE { [2, 1] } else { [0, 1] });
-            corner(if fy - xmy > R::ONE { [1, 2] } else { [1, 0] });
-        } else {
-            corner(if fx + xmy < R::ZERO { [-1, 0] } else { [1, 0] });
-            corner(if fy < xmy { [0, -1] } else { [0, 1] });
-        }
+        let [third, fourth] = beyond_2d(fx, fy);
+        corner(third);
+        corner(fourth);
+    }
+}
+
+/// 2D OpenSimplex2S's third and fourth vertices, after `(0, 0)` and `(1, 1)`: the reference's
+/// nested choices on the skewed fractions, the vertex beyond each of the two edges of the
+/// point's triangle nearest it.
+#[inline(always)]
+fn beyond_2d<R: Real>(fx: R, fy: R) -> [[i32; 2]; 2] {
+    let xmy = fx - fy;
+    if fx + fy > R::ONE {
+        [
+            if fx + xmy > R::ONE { [2, 1] } else { [0, 1] },
+            if fy - xmy > R::ONE { [1, 2] } else { [1, 0] },
+        ]
+    } else {
+        [
+            if fx + xmy < R::ZERO { [-1, 0] } else { [1, 0] },
+            if fy < xmy { [0, -1] } else { [0, 1] },
+        ]
     }
 }
 
@@ -579,16 +606,22 @@ fn third_2d<R: Real>(fx: R, fy: R) -> [i32; 2] {
     [1 - up, up]
 }
 
-/// OpenSimplex2's 2D noise at [`LANES`] points, bit for bit [`evaluate`] at each: the same
-/// operations on each lane in the same order, each step a loop over the lanes so that the
-/// compiler vectorises what it can. Every vertex of every lane is computed, out of reach as an
-/// exact 0 ([`term`]).
+/// The 2D noise at [`LANES`] points (OpenSimplex2, or OpenSimplex2S if `smooth`), bit for
+/// bit [`evaluate`] at each: the same operations on each lane in the same order, each step a
+/// loop over the lanes so that the compiler vectorises what it can. Every vertex of every lane
+/// is computed, out of reach as an exact 0 ([`term`]).
 #[inline]
-fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out: &mut [R; LANES]) {
-    let kernel = &FAST[2];
+fn lanes_2d<R: Real, const S: bool>(
+    seed: i64,
+    improve: Improve,
+    p: &[[R; LANES]; 2],
+    out: &mut [R; LANES],
+) {
+    let smooth = S;
+    let kernel = if smooth { &SMOOTH[2] } else { &FAST[2] };
     let mut t = [[0.0f64; LANES]; 2];
     for l in 0..LANES {
-        let turned = turn([p[0][l], p[1][l]], improve, false);
+        let turned = turn([p[0][l], p[1][l]], improve, smooth);
         t[0][l] = turned[0];
         t[1][l] = turned[1];
     }
@@ -600,25 +633,33 @@ fn fast_2d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 2], out:
     let inverse_radius = real::<R>(kernel.inverse_radius);
     let unskew = real::<R>(UNSKEW_2D);
     // By axis, lane innermost (as the lanes' other numbers; an array per lane took 3% more
-    // instructions).
+    // instructions). The vertices after (0, 0) and (1, 1): fast, the third (the fourth
+    // unused); smooth, the third and the fourth.
     let mut d0 = [[R::ZERO; LANES]; 2];
-    let mut third = [[0i32; LANES]; 2];
+    let mut steps = [[[0i32; LANES]; 2]; 2];
     for l in 0..LANES {
         let (fx, fy) = (real::<R>(frac[0][l]), real::<R>(frac[1][l]));
         [d0[0][l], d0[1][l]] = unskewed_base(fx, fy, unskew);
-        [third[0][l], third[1][l]] = third_2d(fx, fy);
+        let chosen = if smooth {
+            beyond_2d(fx, fy)
+        } else {
+            [third_2d(fx, fy), [0, 0]]
+        };
+        for (v, step) in chosen.into_iter().enumerate() {
+            [steps[v][0][l], steps[v][1][l]] = step;
+        }
     }
     let mut value = [R::ZERO; LANES];
-    for corner in 0..3 {
+    for corner in 0..3 + usize::from(smooth) {
         for l in 0..LANES {
             let step = match corner {
                 0 => [0, 0],
                 1 => [1, 1],
-                _ => [third[0][l], third[1][l]],
+                v => [steps[v - 2][0][l], steps[v - 2][1][l]],
             };
             let cell = plus([cell[0][l], cell[1][l]], step);
             let d = unskewed([d0[0][l], d0[1][l]], step, unskew);
-            value[l] = value[l] + term(seed, cell, d, inverse_radius);
+            value[l] = value[l] + term(key(seed, cell), d, inverse_radius);
         }
     }
     finish_lanes(&value, kernel, out);
@@ -646,7 +687,7 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
         };
         for l in 0..LANES {
             for (c, e) in pair_3d(cell[l], d[l], &up[l]) {
-                value[l] = value[l] + term(seed, c, e, inverse_radius);
+                value[l] = value[l] + term(key(seed, c), e, inverse_radius);
             }
             if lattice == 0 {
                 other_lattice_3d(&mut cell[l], &mut d[l], &mut up[l]);
@@ -685,7 +726,7 @@ fn fast_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G
     let mut seed = seed;
     for lattice in 0..2 {
         for (c, e) in pair_3d(cell, d, &up) {
-            sum.vertex(seed, c, e);
+            sum.vertex(key(seed, c), e);
         }
         if lattice == 1 {
             break;
@@ -755,69 +796,109 @@ fn other_lattice_3d<R: Real>(cell: &mut [i64; 3], d: &mut [R; 3], up: &mut [bool
 /// the reference (and this) has small jumps (`tests/tests/opensimplex.rs` measures them).
 #[inline(always)]
 fn smooth_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G>) {
-    let half = R::from_ratio(1, 1);
-    let mut cell = [0i32; 3];
-    let mut f = [R::ZERO; 3];
-    // Per axis: whether the point lies in the upper half of its cube (then `v₀` is the upper
-    // corner and `v₁`'s neighbour toward the point is the upper one).
-    let mut upper = [false; 3];
-    for a in 0..3 {
-        (cell[a], f[a]) = floor_split::<R>(t[a]);
-        upper[a] = f[a] >= half;
-    }
-    let seed1 = seed ^ SEED_FLIP_3D;
-    // `v₀` with the axes of `flip` flipped to the cube's other corner: its cell and offset.
-    let corner = |flip: [bool; 3]| {
-        let mut step = [0i32; 3];
-        let mut d = f;
-        for a in 0..3 {
-            if upper[a] != flip[a] {
-                step[a] = 1;
-                d[a] = d[a] - R::ONE;
-            }
-        }
-        (plus(cell, step), d)
-    };
-    // `v₁` (at the cube's centre, hashed as cell + 1) moved toward the point along `moved`.
-    let centre = |moved: [bool; 3]| {
-        let mut step = [1i32; 3];
-        let mut d = f.map(|x| x - half);
-        for a in 0..3 {
-            if moved[a] {
-                if upper[a] {
-                    step[a] = 2;
-                    d[a] = d[a] - R::ONE;
-                } else {
-                    step[a] = 0;
-                    d[a] = d[a] + R::ONE;
-                }
-            }
-        }
-        (plus(cell, step), d)
-    };
-    let (c, d) = corner([false; 3]);
-    sum.vertex(seed, c, d);
-    let (c, d) = centre([false; 3]);
-    sum.vertex(seed1, c, d);
+    let cube = Cube::new(seed, t);
+    sum.vertex(cube.corner(NONE), cube.corner_offset(NONE));
+    sum.vertex(cube.centre(NONE), cube.centre_offset(NONE));
     // Per axis: whether `v₁` moved along it alone was taken.
     let mut moved_alone = [false; 3];
     for (a, moved) in moved_alone.iter_mut().enumerate() {
-        let along = core::array::from_fn(|b| b == a);
-        let others = core::array::from_fn(|b| b != a);
-        let (c, d) = corner(along);
-        if !sum.add(seed, c, d) {
-            let (c, d) = corner(others);
-            sum.vertex(seed, c, d);
-            let (c, d) = centre(along);
+        let along = ALONG[a];
+        if !sum.add(cube.corner(along), cube.corner_offset(along)) {
+            let others = OTHERS[a];
+            sum.vertex(cube.corner(others), cube.corner_offset(others));
             // The reference then skips `v₁` moved along the other two axes.
-            *moved = sum.add(seed1, c, d);
+            *moved = sum.add(cube.centre(along), cube.centre_offset(along));
         }
     }
     for (a, moved) in moved_alone.into_iter().enumerate() {
         if !moved {
-            let (c, d) = centre(core::array::from_fn(|b| b != a));
-            sum.vertex(seed1, c, d);
+            let others = OTHERS[a];
+            sum.vertex(cube.centre(others), cube.centre_offset(others));
         }
+    }
+}
+
+/// No axis, each axis alone, and each pair of axes (the other two than an axis's), as the
+/// index (0 or 1) of the per-axis choice of [`Cube`].
+const NONE: [usize; 3] = [0; 3];
+const ALONG: [[usize; 3]; 3] = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+const OTHERS: [[usize; 3]; 3] = [[0, 1, 1], [1, 0, 1], [1, 1, 0]];
+
+/// The vertices [`smooth_3d`] chooses from around a turned point, per axis: `v₀` (the
+/// point's cube's corner nearest it, in the first cubic lattice) and that corner flipped to
+/// the cube's other side; `v₁` (the vertex at the cube's centre, in the second lattice,
+/// hashed as cell + 1) and `v₁` moved toward the point. Each as its hash key's part
+/// ([`share`]) and its offset from the point, so that a vertex is three choices joined.
+#[derive(Clone, Copy)]
+struct Cube<R> {
+    /// The seeds of the two lattices.
+    seeds: [i64; 2],
+    /// Per axis: `v₀`'s and the flipped corner's key parts.
+    corner_keys: [[i64; 2]; 3],
+    /// Per axis: `v₀`'s and the flipped corner's offsets.
+    corner_offsets: [[R; 2]; 3],
+    /// Per axis: `v₁`'s and the moved vertex's key parts.
+    centre_keys: [[i64; 2]; 3],
+    /// Per axis: `v₁`'s and the moved vertex's offsets.
+    centre_offsets: [[R; 2]; 3],
+}
+
+impl<R: Real> Cube<R> {
+    #[inline(always)]
+    fn new(seed: i64, t: [f64; 3]) -> Self {
+        let half = R::from_ratio(1, 1);
+        let mut cube = Self {
+            seeds: [seed, seed ^ SEED_FLIP_3D],
+            corner_keys: [[0; 2]; 3],
+            corner_offsets: [[R::ZERO; 2]; 3],
+            centre_keys: [[0; 2]; 3],
+            centre_offsets: [[R::ZERO; 2]; 3],
+        };
+        for (a, &t) in t.iter().enumerate() {
+            let (cell, f) = floor_split::<R>(t);
+            let part = |step: i64| share(a, i64::from(cell) + step);
+            // In the upper half of its cube, `v₀` is the upper corner and `v₁`'s neighbour
+            // toward the point the upper one.
+            let centred = f - half;
+            if f >= half {
+                cube.corner_keys[a] = [part(1), part(0)];
+                cube.corner_offsets[a] = [f - R::ONE, f];
+                cube.centre_keys[a] = [part(1), part(2)];
+                cube.centre_offsets[a] = [centred, centred - R::ONE];
+            } else {
+                cube.corner_keys[a] = [part(0), part(1)];
+                cube.corner_offsets[a] = [f, f - R::ONE];
+                cube.centre_keys[a] = [part(1), part(0)];
+                cube.centre_offsets[a] = [centred, centred + R::ONE];
+            }
+        }
+        cube
+    }
+
+    /// The hash key of `v₀` with the axes where `flip` is 1 flipped.
+    #[inline(always)]
+    fn corner(&self, flip: [usize; 3]) -> i64 {
+        let k = &self.corner_keys;
+        self.seeds[0] ^ k[0][flip[0]] ^ k[1][flip[1]] ^ k[2][flip[2]]
+    }
+
+    /// The offset from [`corner`](Self::corner)`(flip)`.
+    #[inline(always)]
+    fn corner_offset(&self, flip: [usize; 3]) -> [R; 3] {
+        core::array::from_fn(|a| self.corner_offsets[a][flip[a]])
+    }
+
+    /// The hash key of `v₁` moved toward the point along the axes where `moved` is 1.
+    #[inline(always)]
+    fn centre(&self, moved: [usize; 3]) -> i64 {
+        let k = &self.centre_keys;
+        self.seeds[1] ^ k[0][moved[0]] ^ k[1][moved[1]] ^ k[2][moved[2]]
+    }
+
+    /// The offset from [`centre`](Self::centre)`(moved)`.
+    #[inline(always)]
+    fn centre_offset(&self, moved: [usize; 3]) -> [R; 3] {
+        core::array::from_fn(|a| self.centre_offsets[a][moved[a]])
     }
 }
 
@@ -860,7 +941,7 @@ fn fast_4d<R: Real, const G: bool>(seed: i64, t: [f64; 4], sum: &mut Sum<R, 4, G
         }
         let s = (f[0] + f[1] + f[2] + f[3]).mul_fraction(unskew);
         let d = f.map(|x| x + s);
-        sum.vertex(seed, cell, d);
+        sum.vertex(key(seed, cell), d);
         if copy == 4 {
             break;
         }
@@ -990,7 +1071,7 @@ fn smooth_4d<R: Real, const G: bool>(seed: i64, t: [f64; 4], sum: &mut Sum<R, 4,
     let d0 = f.map(|x| x + s);
     for v in &SMOOTH_4D {
         let step = v.map(i32::from);
-        sum.vertex(seed, plus(cell, step), unskewed(d0, step, unskew));
+        sum.vertex(key(seed, plus(cell, step)), unskewed(d0, step, unskew));
     }
 }
 
@@ -1118,14 +1199,13 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                // OpenSimplex2 in 2D and 3D has lane bodies; the rest go point by point.
-                if !$smooth {
-                    if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
-                        return fast_2d_lanes(self.seed, self.improve, p, out);
-                    }
-                    if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
-                        return fast_3d_lanes(self.seed, self.improve, p, out);
-                    }
+                // 2D and OpenSimplex2's 3D have lane bodies; the rest go point by point (3D
+                // OpenSimplex2S's vertex choices as lanes took the points' time).
+                if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
+                    return lanes_2d::<R, { $smooth }>(self.seed, self.improve, p, out);
+                }
+                if let (false, Ok(p)) = ($smooth, <&[[R; LANES]; 3]>::try_from(&p[..])) {
+                    return fast_3d_lanes(self.seed, self.improve, p, out);
                 }
                 for (l, o) in out.iter_mut().enumerate() {
                     *o = self.sample(crate::batch::lane(p, l));
@@ -1399,16 +1479,13 @@ mod tests {
     use super::*;
     use crate::{I16F16, Noise};
 
-    /// The lane bodies (`sample_lanes`, 2D and 3D) give `sample`'s bits at each lane, for
-    /// every orientation, several seeds and every number type: random points near and far
-    /// from the origin, points on the lattices' edges and vertices (multiples of ¼), and
-    /// non-finite ones.
+    /// The lane bodies (`sample_lanes`, 2D and 3D, OpenSimplex2 and OpenSimplex2S) give
+    /// `sample`'s bits at each lane, for every orientation, several seeds and every number
+    /// type: random points near and far from the origin, points on the lattices' edges and
+    /// vertices (multiples of ¼), and non-finite ones.
     #[test]
     fn lanes_are_the_point_samples() {
-        fn check<R: Real, const D: usize>(noise: &OpenSimplex2, p: &[[f32; LANES]; D])
-        where
-            OpenSimplex2: Noise<R, D>,
-        {
+        fn check<R: Real, const D: usize, N: Noise<R, D>>(noise: &N, p: &[[f32; LANES]; D]) {
             let p = p.map(|axis| axis.map(R::from_f32));
             let mut got = [R::ZERO; LANES];
             noise.sample_lanes(&p, &mut got);
@@ -1422,13 +1499,13 @@ mod tests {
                 );
             }
         }
-        fn all_types<const D: usize>(noise: &OpenSimplex2, p: &[[f32; LANES]; D])
+        fn all_types<const D: usize, N>(noise: &N, p: &[[f32; LANES]; D])
         where
-            OpenSimplex2: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>,
+            N: Noise<f32, D> + Noise<f64, D> + Noise<I16F16, D>,
         {
-            check::<f32, D>(noise, p);
-            check::<f64, D>(noise, p);
-            check::<I16F16, D>(noise, p);
+            check::<f32, D, N>(noise, p);
+            check::<f64, D, N>(noise, p);
+            check::<I16F16, D, N>(noise, p);
         }
         let mut next = crate::testing::xorshift32(0x2545_F491);
         let mut unit = move || f64::from(next()) / f64::from(u32::MAX);
@@ -1442,13 +1519,16 @@ mod tests {
         for seed in [0, -7, i64::MAX, 0x1234_5678_9ABC] {
             for improve in [Improve::Standard, Improve::XY, Improve::XZ] {
                 let noise = OpenSimplex2::new(seed).improving(improve);
+                let smooth = OpenSimplex2S::new(seed).improving(improve);
                 for round in 0..400 {
                     let p2: [[f32; LANES]; 2] =
                         core::array::from_fn(|_| core::array::from_fn(|_| coordinate(round)));
                     all_types(&noise, &p2);
+                    all_types(&smooth, &p2);
                     let p3: [[f32; LANES]; 3] =
                         core::array::from_fn(|_| core::array::from_fn(|_| coordinate(round)));
                     all_types(&noise, &p3);
+                    all_types(&smooth, &p3);
                 }
             }
         }
