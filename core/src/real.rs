@@ -87,7 +87,7 @@ pub(crate) mod sealed {
     /// Whether this target emulates floats in software (Arm without the hard-float ABI, RISC-V
     /// without F): there a multiplication is a library call, and integer operations on the
     /// bits are cheaper.
-    const SOFT_FLOAT: bool = cfg!(any(
+    pub(crate) const SOFT_FLOAT: bool = cfg!(any(
         all(target_arch = "arm", not(target_abi = "eabihf")),
         all(
             any(target_arch = "riscv32", target_arch = "riscv64"),

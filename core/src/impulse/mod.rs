@@ -46,6 +46,7 @@ pub use sparse::SparseConvolution;
 use crate::batch::LANES;
 use crate::hash::chain::ChainHash;
 use crate::hash::{CellHash, CellRng, Poisson};
+use crate::real::sealed::SOFT_FLOAT;
 use crate::{Error, Real};
 
 /// The largest fixed count per cell ([`Impulses::fixed`]).
@@ -315,24 +316,30 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
     // The joins of the shares of axes 0..=a at the last cell's digits.
     let mut joined = [K::Share::default(); D];
     let mut last = [usize::MAX; D];
+    // On the cores without an FPU (where floats are emulated: Cortex-M0, RV32IMC), whose
+    // multiplications are costly (the Cortex-M0 has no 64-bit product for fixed point either),
+    // the last axis's join waits for the cell's first impulse in reach: most cells of a 3D
+    // walk have none. Elsewhere the test costs more than the join it saves (most cells of a
+    // 2D walk have one). The same joins either way: the same bits.
+    let lazy = D > 1 && SOFT_FLOAT;
+    let join = |joined: &[K::Share; D], a: usize, share| match a.checked_sub(1) {
+        // `b % D` is `b` (below `a`); it says so to the compiler (no bounds check).
+        Some(b) => per_cell.join(joined[b % D], share),
+        None => share,
+    };
     hash.near(&cells, &gaps, R::ONE, |digit, key, _| {
         let mut rng = CellRng::from_key(key);
         let here: [R; D] = core::array::from_fn(|a| base[a][digit[a].min(2)]);
         let mut moved = false;
-        for a in 0..D {
+        for a in 0..D - usize::from(lazy) {
             let d = digit[a].min(2);
             moved |= d != last[a];
             if moved {
-                let share = shares[a][d];
-                // `b % D` is `b` (below `a`); it says so to the compiler (no bounds check).
-                joined[a] = match a.checked_sub(1) {
-                    Some(b) => per_cell.join(joined[b % D], share),
-                    None => share,
-                };
+                joined[a] = join(&joined, a, shares[a][d]);
                 last[a] = d;
             }
         }
-        let cell = joined[D - 1];
+        let mut cell = (!lazy).then(|| joined[D - 1]);
         for _ in 0..impulses.count(&mut rng) {
             let draw = rng.next_u32();
             // The offset along axis a from the impulse to the point.
@@ -350,7 +357,11 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
             let w = impulses.weights.draw(draw, &mut rng);
             let mut own = rng.clone();
             rng.skip(extra);
-            visit(delta, d2, w, &prepare(&mut own), &cell);
+            let cell = cell.get_or_insert_with(|| {
+                let a = D - 1;
+                join(&joined, a, shares[a][digit[a].min(2)])
+            });
+            visit(delta, d2, w, &prepare(&mut own), cell);
         }
     });
 }
