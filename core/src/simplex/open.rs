@@ -804,109 +804,90 @@ fn other_lattice_3d<R: Real>(cell: &mut [i64; 3], d: &mut [R; 3], up: &mut [bool
 /// the reference (and this) has small jumps (`tests/tests/opensimplex.rs` measures them).
 #[inline(always)]
 fn smooth_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G>) {
-    let cube = Cube::new(seed, t);
-    sum.vertex(cube.corner(NONE), cube.corner_offset(NONE));
-    sum.vertex(cube.centre(NONE), cube.centre_offset(NONE));
+    let [corners, centres] = Choices::around(seed, t);
+    let (key, d) = corners.vertex(NONE);
+    sum.vertex(key, d);
+    let (key, d) = centres.vertex(NONE);
+    sum.vertex(key, d);
     // Per axis: whether `v₁` moved along it alone was taken.
     let mut moved_alone = [false; 3];
     for (a, moved) in moved_alone.iter_mut().enumerate() {
-        let along = ALONG[a];
-        if !sum.add(cube.corner(along), cube.corner_offset(along)) {
-            let others = OTHERS[a];
-            sum.vertex(cube.corner(others), cube.corner_offset(others));
+        let (key, d) = corners.vertex(ALONG[a]);
+        if !sum.add(key, d) {
+            let (key, d) = corners.vertex(OTHERS[a]);
+            sum.vertex(key, d);
+            let (key, d) = centres.vertex(ALONG[a]);
             // The reference then skips `v₁` moved along the other two axes.
-            *moved = sum.add(cube.centre(along), cube.centre_offset(along));
+            *moved = sum.add(key, d);
         }
     }
     for (a, moved) in moved_alone.into_iter().enumerate() {
         if !moved {
-            let others = OTHERS[a];
-            sum.vertex(cube.centre(others), cube.centre_offset(others));
+            let (key, d) = centres.vertex(OTHERS[a]);
+            sum.vertex(key, d);
         }
     }
 }
 
 /// No axis, each axis alone, and each pair of axes (the other two than an axis's), as the
-/// index (0 or 1) of the per-axis choice of [`Cube`].
+/// index (0 or 1) of the per-axis choice of [`Choices`].
 const NONE: [usize; 3] = [0; 3];
 const ALONG: [[usize; 3]; 3] = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
 const OTHERS: [[usize; 3]; 3] = [[0, 1, 1], [1, 0, 1], [1, 1, 0]];
 
-/// The vertices [`smooth_3d`] chooses from around a turned point, per axis: `v₀` (the
-/// point's cube's corner nearest it, in the first cubic lattice) and that corner flipped to
-/// the cube's other side; `v₁` (the vertex at the cube's centre, in the second lattice,
-/// hashed as cell + 1) and `v₁` moved toward the point. Each as its hash key's part
-/// ([`share`]) and its offset from the point, so that a vertex is three choices joined.
+/// Two vertices per axis to choose from, as a hash key's part ([`share`]) and an offset from
+/// the point, so that a vertex is three choices joined; [`smooth_3d`] has two sets.
 #[derive(Clone, Copy)]
-struct Cube<R> {
-    /// The seeds of the two lattices.
-    seeds: [i64; 2],
-    /// Per axis: `v₀`'s and the flipped corner's key parts.
-    corner_keys: [[i64; 2]; 3],
-    /// Per axis: `v₀`'s and the flipped corner's offsets.
-    corner_offsets: [[R; 2]; 3],
-    /// Per axis: `v₁`'s and the moved vertex's key parts.
-    centre_keys: [[i64; 2]; 3],
-    /// Per axis: `v₁`'s and the moved vertex's offsets.
-    centre_offsets: [[R; 2]; 3],
+struct Choices<R> {
+    /// The lattice's seed.
+    seed: i64,
+    /// Per axis: the key parts of the first and second choice.
+    keys: [[i64; 2]; 3],
+    /// Per axis: their offsets.
+    offsets: [[R; 2]; 3],
 }
 
-impl<R: Real> Cube<R> {
+impl<R: Real> Choices<R> {
+    /// The choices around the turned point `t`, each axis's computed once: in the first cubic
+    /// lattice `v₀` (the point's cube's corner nearest it) and that corner flipped to the
+    /// cube's other side; in the second, `v₁` (the vertex at the cube's centre, hashed as
+    /// cell + 1) and `v₁` moved toward the point.
     #[inline(always)]
-    fn new(seed: i64, t: [f64; 3]) -> Self {
+    fn around(seed: i64, t: [f64; 3]) -> [Self; 2] {
         let half = R::from_ratio(1, 1);
-        let mut cube = Self {
-            seeds: [seed, seed ^ SEED_FLIP_3D],
-            corner_keys: [[0; 2]; 3],
-            corner_offsets: [[R::ZERO; 2]; 3],
-            centre_keys: [[0; 2]; 3],
-            centre_offsets: [[R::ZERO; 2]; 3],
-        };
+        let mut choices = [seed, seed ^ SEED_FLIP_3D].map(|seed| Self {
+            seed,
+            keys: [[0; 2]; 3],
+            offsets: [[R::ZERO; 2]; 3],
+        });
         for (a, &t) in t.iter().enumerate() {
             let (cell, f) = floor_split::<R>(t);
             let part = |step: i64| share(a, i64::from(cell) + step);
             // In the upper half of its cube, `v₀` is the upper corner and `v₁`'s neighbour
             // toward the point the upper one.
             let centred = f - half;
+            let [corners, centres] = &mut choices;
             if f >= half {
-                cube.corner_keys[a] = [part(1), part(0)];
-                cube.corner_offsets[a] = [f - R::ONE, f];
-                cube.centre_keys[a] = [part(1), part(2)];
-                cube.centre_offsets[a] = [centred, centred - R::ONE];
+                (corners.keys[a], corners.offsets[a]) = ([part(1), part(0)], [f - R::ONE, f]);
+                (centres.keys[a], centres.offsets[a]) =
+                    ([part(1), part(2)], [centred, centred - R::ONE]);
             } else {
-                cube.corner_keys[a] = [part(0), part(1)];
-                cube.corner_offsets[a] = [f, f - R::ONE];
-                cube.centre_keys[a] = [part(1), part(0)];
-                cube.centre_offsets[a] = [centred, centred + R::ONE];
+                (corners.keys[a], corners.offsets[a]) = ([part(0), part(1)], [f, f - R::ONE]);
+                (centres.keys[a], centres.offsets[a]) =
+                    ([part(1), part(0)], [centred, centred + R::ONE]);
             }
         }
-        cube
+        choices
     }
 
-    /// The hash key of `v₀` with the axes where `flip` is 1 flipped.
+    /// The hash key of the vertex of choice `pick[a]` along each axis `a`, and its offset.
     #[inline(always)]
-    fn corner(&self, flip: [usize; 3]) -> i64 {
-        let k = &self.corner_keys;
-        self.seeds[0] ^ k[0][flip[0]] ^ k[1][flip[1]] ^ k[2][flip[2]]
-    }
-
-    /// The offset from [`corner`](Self::corner)`(flip)`.
-    #[inline(always)]
-    fn corner_offset(&self, flip: [usize; 3]) -> [R; 3] {
-        core::array::from_fn(|a| self.corner_offsets[a][flip[a]])
-    }
-
-    /// The hash key of `v₁` moved toward the point along the axes where `moved` is 1.
-    #[inline(always)]
-    fn centre(&self, moved: [usize; 3]) -> i64 {
-        let k = &self.centre_keys;
-        self.seeds[1] ^ k[0][moved[0]] ^ k[1][moved[1]] ^ k[2][moved[2]]
-    }
-
-    /// The offset from [`centre`](Self::centre)`(moved)`.
-    #[inline(always)]
-    fn centre_offset(&self, moved: [usize; 3]) -> [R; 3] {
-        core::array::from_fn(|a| self.centre_offsets[a][moved[a]])
+    fn vertex(&self, pick: [usize; 3]) -> (i64, [R; 3]) {
+        let k = &self.keys;
+        (
+            self.seed ^ k[0][pick[0]] ^ k[1][pick[1]] ^ k[2][pick[2]],
+            core::array::from_fn(|a| self.offsets[a][pick[a]]),
+        )
     }
 }
 
