@@ -51,6 +51,12 @@ impl CellRng {
         Self { state: key }
     }
 
+    /// The Weyl state: [`from_key`](Self::from_key) of it continues the sequence from here.
+    #[inline]
+    pub(crate) const fn state(&self) -> u32 {
+        self.state
+    }
+
     /// The next 32 random bits.
     #[inline]
     pub fn next_u32(&mut self) -> u32 {

@@ -44,7 +44,9 @@ pub use kernel::Kernel;
 pub use sparse::SparseConvolution;
 
 use crate::batch::LANES;
+use crate::hash::cell::mix;
 use crate::hash::chain::ChainHash;
+use crate::hash::rng::WEYL;
 use crate::hash::{CellHash, CellRng, Poisson};
 use crate::real::sealed::SOFT_FLOAT;
 use crate::{Error, Real};
@@ -211,6 +213,14 @@ impl Impulses {
     }
 }
 
+/// Whether the point walk tests its impulses in groups of [`GROUP`] (in `f32`, on targets
+/// with vectors of four `f32`s, where the group's draws, positions and distances take a few
+/// vector operations; elsewhere one by one).
+const GROUPED: bool = cfg!(any(target_arch = "x86_64", target_arch = "aarch64"));
+
+/// The impulses of a group.
+const GROUP: usize = 4;
+
 /// The walks' `(extra, prepare)` for kernels without random parameters of their own.
 pub(crate) const NO_PARAMS: (u32, fn(&mut CellRng)) = (0, |_| ());
 
@@ -340,6 +350,45 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
             }
         }
         let mut cell = (!lazy).then(|| joined[D - 1]);
+        if GROUPED && R::BINARY32 {
+            // Each impulse takes `stride` draws, so the position draws of a group of impulses
+            // are at known places in the cell's sequence: a group's draws, positions and
+            // squared distances are computed together (in vectors where the target has them,
+            // the lanes innermost), then its impulses in reach visited in order, each from its
+            // own place.
+            let stride = 1 + weight_draws + extra;
+            let count = impulses.count(&mut rng);
+            let start = rng.state();
+            for first in (0..count).step_by(GROUP) {
+                let states: [u32; GROUP] = core::array::from_fn(|j| {
+                    let before = (first + j as u32).wrapping_mul(stride).wrapping_add(1);
+                    start.wrapping_add(WEYL.wrapping_mul(before))
+                });
+                let draws = states.map(mix);
+                let offset = |draw: u32, a: usize| here[a] - position::<R, D>(draw, a);
+                let mut d2s = [R::ZERO; GROUP];
+                for a in 0..D {
+                    for j in 0..GROUP {
+                        let d = offset(draws[j], a);
+                        d2s[j] = d2s[j] + d.mul_rn(d);
+                    }
+                }
+                for j in 0..GROUP.min((count - first) as usize) {
+                    if d2s[j] >= R::ONE {
+                        continue;
+                    }
+                    let (draw, mut rng) = (draws[j], CellRng::from_key(states[j]));
+                    let delta: [R; D] = core::array::from_fn(|a| offset(draw, a));
+                    let w = impulses.weights.draw(draw, &mut rng);
+                    let cell = cell.get_or_insert_with(|| {
+                        let a = D - 1;
+                        join(&joined, a, shares[a][digit[a].min(2)])
+                    });
+                    visit(delta, d2s[j], w, &prepare(&mut rng), cell);
+                }
+            }
+            return;
+        }
         for _ in 0..impulses.count(&mut rng) {
             let draw = rng.next_u32();
             // The offset along axis a from the impulse to the point.
@@ -522,6 +571,96 @@ where
 mod tests {
     extern crate std;
     use super::*;
+
+    /// In `f32` (where the walk tests a cell's impulses in groups on the targets with
+    /// vectors) the walk visits the impulses a one-by-one walk written out here visits, with
+    /// the same numbers (offset, squared distance, weight, the draws after them): Poisson and
+    /// fixed counts, ±1 and uniform weights, kernels with and without draws of their own, 1D
+    /// to 3D, random points near and far.
+    #[test]
+    fn walk_visits_the_impulses_one_by_one() {
+        type Visit = (std::vec::Vec<u32>, u32, u32, [u32; 2]);
+        fn visits<const D: usize>(
+            impulses: &Impulses,
+            extra: u32,
+            p: [f32; D],
+        ) -> [std::vec::Vec<Visit>; 2] {
+            let hash = CellHash::new(0x5EED);
+            let prepare = |rng: &mut CellRng| [rng.next_u32(), rng.next_u32()];
+            let mut seen = std::vec::Vec::new();
+            let visit = |delta: [f32; D], d2: f32, w: f32, drawn: &[u32; 2], _: &()| {
+                let delta = delta.iter().map(|d| d.to_bits()).collect();
+                seen.push((delta, d2.to_bits(), w.to_bits(), *drawn));
+            };
+            walk(&hash, impulses, p, (extra, prepare), &(), visit);
+            // One by one, over the 3^D cells in the walk's order (the first axis slowest).
+            let weight_draws = u32::from(impulses.weights == Weights::Uniform);
+            let split = p.map(Real::split);
+            let mut want = std::vec::Vec::new();
+            for n in 0..3usize.pow(D as u32) {
+                let o: [usize; D] =
+                    core::array::from_fn(|a| n / 3usize.pow((D - 1 - a) as u32) % 3);
+                let mut gap = 0.0f32;
+                let mut here = [0.0f32; D];
+                let mut cell = [0i32; D];
+                for a in 0..D {
+                    let (c, f) = split[a];
+                    let g = 1.0 - f;
+                    gap += [f * f, 0.0, g * g][o[a]];
+                    here[a] = [f + 1.0, f, f - 1.0][o[a]];
+                    cell[a] = c.wrapping_add(o[a] as i32 - 1);
+                }
+                if gap >= 1.0 {
+                    continue;
+                }
+                let mut rng = CellRng::new(&hash, cell);
+                for _ in 0..impulses.count(&mut rng) {
+                    let draw = rng.next_u32();
+                    let delta: [f32; D] =
+                        core::array::from_fn(|a| here[a] - position::<f32, D>(draw, a));
+                    let d2 = delta.iter().fold(0.0f32, |s, d| s + d * d);
+                    if d2 >= 1.0 {
+                        rng.skip(weight_draws + extra);
+                        continue;
+                    }
+                    let w = impulses.weights.draw::<f32>(draw, &mut rng);
+                    let mut own = rng.clone();
+                    rng.skip(extra);
+                    let delta = delta.iter().map(|d| d.to_bits()).collect();
+                    want.push((delta, d2.to_bits(), w.to_bits(), prepare(&mut own)));
+                }
+            }
+            [seen, want]
+        }
+        let mut next = crate::testing::xorshift32(0x1357_9BDF);
+        let mut unit = move || f64::from(next()) / f64::from(u32::MAX);
+        let sets = [
+            Impulses::poisson_checked(2.4, Weights::Sign),
+            Impulses::poisson_checked(5.1, Weights::Uniform),
+            Impulses::fixed(3).unwrap(),
+            Impulses::fixed(9).unwrap().with_weights(Weights::Uniform),
+        ];
+        let mut visited = 0;
+        for impulses in &sets {
+            for extra in [0, 1, 2] {
+                for round in 0..60 {
+                    let scale = if round % 2 == 0 { 40.0 } else { 3e5 };
+                    let mut c = || ((unit() - 0.5) * scale) as f32;
+                    let (p1, p2, p3) = ([c()], [c(), c()], [c(), c(), c()]);
+                    let [got, want] = visits(impulses, extra, p1);
+                    assert_eq!(got, want, "{p1:?}");
+                    visited += got.len();
+                    let [got, want] = visits(impulses, extra, p2);
+                    assert_eq!(got, want, "{p2:?}");
+                    visited += got.len();
+                    let [got, want] = visits(impulses, extra, p3);
+                    assert_eq!(got, want, "{p3:?}");
+                    visited += got.len();
+                }
+            }
+        }
+        assert!(visited > 10_000, "{visited}");
+    }
 
     /// The walk's shared prefixes give each cell its [`CellHash`], and it visits exactly the
     /// cells within reach (against a direct loop over the 3^D cells).
