@@ -76,7 +76,13 @@ impl<const N: usize> TileData<2> for Tile2<N> {
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
         // In range by construction; `get` keeps sampling provably panic-free.
-        R::from_f32(self.data.as_flattened().get(index).copied().unwrap_or(0.0))
+        let coefficients = self.data.as_flattened();
+        R::from_f32(
+            coefficients
+                .get(within(index, coefficients.len()))
+                .copied()
+                .unwrap_or(0.0),
+        )
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
@@ -93,10 +99,27 @@ impl<const N: usize> TileData<3> for Tile3<N> {
     fn flat<R: Real>(&self, index: usize) -> R {
         // In range by construction; `get` keeps sampling provably panic-free.
         let coefficients = self.data.as_flattened().as_flattened();
-        R::from_f32(coefficients.get(index).copied().unwrap_or(0.0))
+        R::from_f32(
+            coefficients
+                .get(within(index, coefficients.len()))
+                .copied()
+                .unwrap_or(0.0),
+        )
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
+    }
+}
+
+/// `index`, below `len` by construction, masked to `len`'s range where `len` is a power of two
+/// (every default tile): the same index, and the optimiser then sees the read in range and
+/// drops its bounds check, a compare and a branch per coefficient.
+#[inline(always)]
+pub(crate) const fn within(index: usize, len: usize) -> usize {
+    if len.is_power_of_two() {
+        index & (len - 1)
+    } else {
+        index
     }
 }
 
@@ -559,23 +582,24 @@ impl<'t, T> Wavelet<'t, T> {
         // block's blend weights (0 beyond its reach; with abutting blocks, 1 or 0): the
         // summing is `add_block` with one lane, so the batch path shares it.
         let mut sided: [_; K] = core::array::from_fn(|k| self.sided(&sets[k], crossing, &local0));
-        let members = if crossing == 0 {
-            [[0b111; D]; 2] // one block (3D): every coefficient
-        } else {
-            self.members(crossing, &local0)
-        };
         // A coefficient beyond its block's reach is skipped where multiplying costs more than
         // a branch (no float unit: ARMv6-M, which has no 64-bit product either, and RV32
         // without F; and wasm32, whose engines keep the branches cheap), and elsewhere weighs
         // 0: adding the `±0` it gives leaves a sum's bits as they are ([`exclude`]).
         // The same bits either way; which is faster where was measured (bench/README.md,
-        // "wavelet sums in columns").
+        // "wavelet sums in columns"). In blend zones (`h > 0`) the blend weights are already
+        // 0 beyond a block's reach, so only skipping needs the members.
         let skip = cfg!(any(
             bandnoise_armv6m,
             all(target_arch = "riscv32", not(target_feature = "f")),
             target_arch = "wasm32"
         ));
-        if !skip && crossing != 0 {
+        let members = if crossing == 0 || !skip && h > 0 {
+            [[0b111; D]; 2] // every coefficient of each block read
+        } else {
+            self.members(crossing, &local0)
+        };
+        if !skip && h == 0 && crossing != 0 {
             sided.iter_mut().for_each(|sides| exclude(sides, members));
         }
         // Every subset of the crossing axes, largest first.

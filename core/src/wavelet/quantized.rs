@@ -140,7 +140,10 @@ impl<const N: usize> QuantizedTile3<N> {
     #[inline]
     fn read(&self, index: usize) -> i32 {
         let data = self.data.as_flattened().as_flattened();
-        data.get(index).copied().unwrap_or(0).into()
+        data.get(super::band::within(index, data.len()))
+            .copied()
+            .unwrap_or(0)
+            .into()
     }
 }
 
