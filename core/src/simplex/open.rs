@@ -1212,6 +1212,18 @@ macro_rules! open_simplex_impls {
                     *o = self.sample(crate::batch::lane(p, l));
                 }
             }
+            fn fill_grid(
+                &self,
+                grid: &crate::batch::Grid<R, $d>,
+                out: &mut [R],
+            ) -> Result<(), crate::Error> {
+                if $smooth && $d == 3 {
+                    // Its lanes are point samples, faster in a plain loop
+                    // (`fill_grid_pointwise`).
+                    return crate::batch::fill_grid_pointwise(self, grid, out);
+                }
+                crate::batch::fill_grid(self, grid, out)
+            }
             fn amplitude_bound(&self) -> f32 {
                 $kernels[$d].bound
             }
