@@ -264,8 +264,8 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
 /// `sample`, the same values in the same order. For 3D OpenSimplex2S (`sample_lanes` a loop
 /// of point samples) this took 0.06 s over the peer benchmark's grid where `fill_grid`'s
 /// chunks of 16 took 0.09, with the same instructions: measured, not explained (no hardware
-/// counters here); other noises whose lanes are point samples (cellular) took the same time
-/// either way.
+/// counters here); cellular noise, whose lanes are point samples too, takes its points' time
+/// in `fill_grid`.
 pub(crate) fn fill_grid_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     noise: &N,
     grid: &Grid<R, D>,
