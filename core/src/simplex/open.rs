@@ -1217,9 +1217,10 @@ macro_rules! open_simplex_impls {
                 grid: &crate::batch::Grid<R, $d>,
                 out: &mut [R],
             ) -> Result<(), crate::Error> {
-                if $smooth && $d == 3 {
-                    // Its lanes are point samples, faster in a plain loop
-                    // (`fill_grid_pointwise`).
+                if $d == 4 || $smooth && $d == 3 {
+                    // Where the lanes are point samples, a plain loop of them is faster
+                    // (`fill_grid_pointwise`: 3D OpenSimplex2S 0.09 -> 0.06 s, 4D OpenSimplex2
+                    // 0.08 -> 0.06 s, 4D OpenSimplex2S 0.27 -> 0.26 s over 512 rows).
                     return crate::batch::fill_grid_pointwise(self, grid, out);
                 }
                 crate::batch::fill_grid(self, grid, out)
