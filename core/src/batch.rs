@@ -261,11 +261,10 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
 }
 
 /// [`fill_grid`] for a noise without a lane body: each row's points one by one, through
-/// `sample`, the same values in the same order. For 3D OpenSimplex2S (`sample_lanes` a loop
-/// of point samples) this took 0.06 s over the peer benchmark's grid where `fill_grid`'s
-/// chunks of 16 took 0.09, with the same instructions (4D OpenSimplex2: 0.06 against 0.08):
-/// measured, not explained (no hardware counters here); cellular noise, whose lanes are point
-/// samples too, takes its points' time in `fill_grid`.
+/// `sample`, the same values in the same order. For the OpenSimplex noises whose lanes are
+/// point samples (3D OpenSimplex2S, 4D) this is faster than `fill_grid`'s chunks of 16 with
+/// the same instructions: measured, not explained (bench/README.md); cellular noise, whose
+/// lanes are point samples too, takes its points' time in `fill_grid`.
 pub(crate) fn fill_grid_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     noise: &N,
     grid: &Grid<R, D>,

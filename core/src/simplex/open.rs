@@ -1219,8 +1219,8 @@ macro_rules! open_simplex_impls {
             ) -> Result<(), crate::Error> {
                 if $d == 4 || $smooth && $d == 3 {
                     // Where the lanes are point samples, a plain loop of them is faster
-                    // (`fill_grid_pointwise`: 3D OpenSimplex2S 0.09 -> 0.06 s, 4D OpenSimplex2
-                    // 0.08 -> 0.06 s, 4D OpenSimplex2S 0.27 -> 0.26 s over 512 rows).
+                    // (`fill_grid_pointwise`; bench/README.md, "OpenSimplex2S 3D and 4D
+                    // grids point by point").
                     return crate::batch::fill_grid_pointwise(self, grid, out);
                 }
                 crate::batch::fill_grid(self, grid, out)
