@@ -51,12 +51,6 @@ impl CellRng {
         Self { state: key }
     }
 
-    /// The Weyl state: [`from_key`](Self::from_key) of it continues the sequence from here.
-    #[inline]
-    pub(crate) const fn state(&self) -> u32 {
-        self.state
-    }
-
     /// The next 32 random bits.
     #[inline]
     pub fn next_u32(&mut self) -> u32 {
@@ -68,7 +62,17 @@ impl CellRng {
     /// needs a draw only sometimes keeps the later draws where they were.
     #[inline]
     pub(crate) fn skip(&mut self, n: u32) {
-        self.state = self.state.wrapping_add(n.wrapping_mul(WEYL));
+        *self = self.ahead(n);
+    }
+
+    /// The generator `n` draws on from this one ([`skip`](Self::skip) without changing this
+    /// one): draws at known places of the sequence, taken out of order.
+    #[inline]
+    #[must_use]
+    pub(crate) const fn ahead(&self, n: u32) -> Self {
+        Self {
+            state: self.state.wrapping_add(n.wrapping_mul(WEYL)),
+        }
     }
 
     /// Uniform in `[0, 1)`: a multiple of 2⁻²⁴, exact in `f32` and `f64`; I16F16 gets it

@@ -44,9 +44,7 @@ pub use kernel::Kernel;
 pub use sparse::SparseConvolution;
 
 use crate::batch::LANES;
-use crate::hash::cell::mix;
 use crate::hash::chain::ChainHash;
-use crate::hash::rng::WEYL;
 use crate::hash::{CellHash, CellRng, Poisson};
 use crate::real::sealed::SOFT_FLOAT;
 use crate::{Error, Real};
@@ -358,13 +356,11 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
             // own place.
             let stride = 1 + weight_draws + extra;
             let count = impulses.count(&mut rng);
-            let start = rng.state();
             for first in (0..count).step_by(GROUP) {
-                let states: [u32; GROUP] = core::array::from_fn(|j| {
-                    let before = (first + j as u32).wrapping_mul(stride).wrapping_add(1);
-                    start.wrapping_add(WEYL.wrapping_mul(before))
-                });
-                let draws = states.map(mix);
+                // Impulse j's generator, just after its position draw.
+                let mut rngs: [CellRng; GROUP] =
+                    core::array::from_fn(|j| rng.ahead((first + j as u32).wrapping_mul(stride)));
+                let draws = rngs.each_mut().map(CellRng::next_u32);
                 let offset = |draw: u32, a: usize| here[a] - position::<R, D>(draw, a);
                 let mut d2s = [R::ZERO; GROUP];
                 for a in 0..D {
@@ -377,7 +373,7 @@ pub(crate) fn walk<R: Real, const D: usize, P, K>(
                     if d2s[j] >= R::ONE {
                         continue;
                     }
-                    let (draw, mut rng) = (draws[j], CellRng::from_key(states[j]));
+                    let (draw, mut rng) = (draws[j], rngs[j].clone());
                     let delta: [R; D] = core::array::from_fn(|a| offset(draw, a));
                     let w = impulses.weights.draw(draw, &mut rng);
                     let cell = cell.get_or_insert_with(|| {
