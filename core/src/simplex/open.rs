@@ -1200,8 +1200,8 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                // 2D and OpenSimplex2's 3D have lane bodies; the rest go point by point (3D
-                // OpenSimplex2S's vertex choices as lanes took the points' time).
+                // 2D and OpenSimplex2's 3D have lane bodies (`has_lanes`); the rest go point
+                // by point (3D OpenSimplex2S's vertex choices as lanes took the points' time).
                 if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
                     return lanes_2d::<R, { $smooth }>(self.seed, self.improve, p, out);
                 }
@@ -1217,13 +1217,14 @@ macro_rules! open_simplex_impls {
                 grid: &crate::batch::Grid<R, $d>,
                 out: &mut [R],
             ) -> Result<(), crate::Error> {
-                if $d == 4 || $smooth && $d == 3 {
-                    // Where the lanes are point samples, a plain loop of them is faster
+                if has_lanes($smooth, $d) {
+                    crate::batch::fill_grid(self, grid, out)
+                } else {
+                    // Its lanes are point samples: a plain loop of them is faster
                     // (`fill_grid_pointwise`; bench/README.md, "OpenSimplex2S 3D and 4D
                     // grids point by point").
-                    return crate::batch::fill_grid_pointwise(self, grid, out);
+                    crate::batch::fill_grid_pointwise(self, grid, out)
                 }
-                crate::batch::fill_grid(self, grid, out)
             }
             fn amplitude_bound(&self) -> f32 {
                 $kernels[$d].bound
@@ -1236,6 +1237,12 @@ macro_rules! open_simplex_impls {
             }
         }
     };
+}
+
+/// Whether `sample_lanes` of the noise (`smooth`: OpenSimplex2S) in `dims` dimensions has a
+/// lane body (`lanes_2d`, `fast_3d_lanes`) rather than a loop of point samples.
+const fn has_lanes(smooth: bool, dims: usize) -> bool {
+    dims == 2 || dims == 3 && !smooth
 }
 
 open_simplex_impls!(OpenSimplex2, false, FAST);
