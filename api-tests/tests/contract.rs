@@ -7,8 +7,8 @@
 //! * no panic (the test profile keeps overflow checks on), no NaN, no −0.0, and the documented
 //!   bound (`amplitude_bound`, `projected_bound`, ±1 for `erf`);
 //! * a NaN, ±∞ or −0.0 coordinate samples 0 along its axis, bit for bit;
-//! * `fill_points` (hence `sample_lanes`) and `fill_grid` (with a bad origin or step) equal
-//!   `sample` at each point, bit for bit;
+//! * `sample_lanes`, `fill_points` and `fill_grid` (with a bad origin or step) equal `sample` at
+//!   each point, bit for bit;
 //! * `sample_with_gradient` (every lattice and periodic noise, fractal sums, wavelet bands,
 //!   multiband noise) gives `sample`'s value and a finite gradient, the origin's for a NaN, ±∞
 //!   or −0.0 coordinate;
@@ -70,7 +70,7 @@ fn bad_points<R: Special, const D: usize>(
     out
 }
 
-/// `sample`, `fill_points` (and through it `sample_lanes`) and `fill_grid`.
+/// `sample`, `sample_lanes`, `fill_points` and `fill_grid`.
 fn sweep_noise<R: Special, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &mut Rng) {
     let bound = noise.amplitude_bound();
     let what = |p: &[R; D]| format!("{name} {D}D {} at {p:?}", R::NAME);
@@ -91,6 +91,17 @@ fn sweep_noise<R: Special, const D: usize, N: Noise<R, D>>(name: &str, noise: &N
         .expect("lengths match");
     for ((p, _), (o, v)) in points.iter().zip(out.iter().zip(&values)) {
         assert_eq!(o.bits(), v.bits(), "fill_points: {}", what(p));
+    }
+    // `sample_lanes` itself: a noise may fill points without it (a loop of `sample` where its
+    // lanes are point samples).
+    for (c, chunk) in points.chunks(LANES).enumerate() {
+        let lanes: [[R; LANES]; D] = from_fn(|a| from_fn(|l| chunk[l.min(chunk.len() - 1)].0[a]));
+        let mut out = [R::ZERO; LANES];
+        noise.sample_lanes(&lanes, &mut out);
+        for (l, (p, _)) in chunk.iter().enumerate() {
+            let v = values[c * LANES + l];
+            assert_eq!(out[l].bits(), v.bits(), "sample_lanes: {}", what(p));
+        }
     }
 
     // Grids with a bad origin or step along one axis; a step that is no power-of-two fraction

@@ -309,6 +309,22 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     Ok(())
 }
 
+/// [`fill_points`] for a noise without a lane body: the points one by one, through `sample`
+/// (for the same noises as [`fill_grid_pointwise`], and for the same reason).
+pub(crate) fn fill_points_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
+    noise: &N,
+    points: [&[R]; D],
+    out: &mut [R],
+) -> Result<(), Error> {
+    for axis in points {
+        check_len(axis.len(), out.len())?;
+    }
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = noise.sample(core::array::from_fn(|a| points[a][i]));
+    }
+    Ok(())
+}
+
 /// Copies the first `out.len()` (at most [`LANES`]) values of `v`: a whole chunk as a copy of
 /// fixed size (a few vector moves, where a copy of variable length calls `memcpy`).
 #[inline]

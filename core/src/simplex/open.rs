@@ -1226,6 +1226,13 @@ macro_rules! open_simplex_impls {
                     crate::batch::fill_grid_pointwise(self, grid, out)
                 }
             }
+            fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), crate::Error> {
+                if has_lanes($smooth, $d) {
+                    crate::batch::fill_points(self, points, out)
+                } else {
+                    crate::batch::fill_points_pointwise(self, points, out)
+                }
+            }
             fn amplitude_bound(&self) -> f32 {
                 $kernels[$d].bound
             }
