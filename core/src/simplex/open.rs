@@ -473,12 +473,17 @@ fn share(a: usize, c: i64) -> i64 {
 #[inline(always)]
 fn hash_dot<R: Real, const D: usize>(key: i64, d: [R; D]) -> ([R; D], R) {
     let g = gradient::<R, D>(key.wrapping_mul(HASH_MULTIPLIER));
-    // |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
+    (g, dot_of(g, d))
+}
+
+/// `g·d` in axis order. |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
+#[inline(always)]
+fn dot_of<R: Real, const D: usize>(g: [R; D], d: [R; D]) -> R {
     let mut dot = R::ZERO;
     for a in 0..D {
         dot = dot + d[a].mul_fraction(g[a]);
     }
-    (g, dot)
+    dot
 }
 
 /// A vertex's term `τ⁴ (g·d)` as [`Sum::add`] adds it, and an exact 0 out of reach (where
@@ -486,9 +491,19 @@ fn hash_dot<R: Real, const D: usize>(key: i64, d: [R; D]) -> ([R; D], R) {
 /// nothing). For the lane bodies, which compute every vertex of every lane.
 #[inline(always)]
 fn term<R: Real, const D: usize>(key: i64, d: [R; D], inverse_radius: R) -> R {
+    term_of(
+        gradient(key.wrapping_mul(HASH_MULTIPLIER)),
+        d,
+        inverse_radius,
+    )
+}
+
+/// [`term`] of the vertex whose gradient is `g`.
+#[inline(always)]
+fn term_of<R: Real, const D: usize>(g: [R; D], d: [R; D], inverse_radius: R) -> R {
     let tau = reach(d, inverse_radius);
     let tau = if tau > R::ZERO { tau } else { R::ZERO };
-    let (_, dot) = hash_dot(key, d);
+    let dot = dot_of(g, d);
     let tau2 = tau.mul_fraction(tau);
     tau2.mul_fraction(tau2).mul_fraction(dot)
 }
@@ -674,17 +689,55 @@ fn lanes_2d<R: Real, const S: bool>(
 }
 
 /// OpenSimplex2's 3D noise at [`LANES`] points, bit for bit [`evaluate`] at each
-/// ([`fast_3d`]'s vertices in its order, each lane's through [`term`]).
+/// ([`fast_3d`]'s vertices in its order, each lane's through [`term_of`]). Each step is a
+/// loop over the lanes with the lanes innermost and selects for `fast_3d`'s branches, so
+/// that the compiler vectorises the splits, the offsets, the choice of the second vertex and
+/// the terms; only the 64-bit hashes (the key's parts per axis, [`share`], and the gradient's
+/// row) are scalar.
 #[inline]
+#[allow(
+    clippy::needless_range_loop,
+    reason = "each step loops over the lanes innermost, indexing the axis arrays, so that it vectorises"
+)]
 fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out: &mut [R; LANES]) {
     let kernel = &FAST[3];
     let inverse_radius = real::<R>(kernel.inverse_radius);
-    let mut cell = [[0i64; 3]; LANES];
-    let mut d = [[R::ZERO; 3]; LANES];
-    let mut up = [[false; 3]; LANES];
+    let half = R::from_ratio(1, 1);
+    let mut t = [[0.0f64; LANES]; 3];
     for l in 0..LANES {
-        let t = turn([p[0][l], p[1][l], p[2][l]], improve, false);
-        (cell[l], d[l], up[l]) = nearest_3d(t);
+        let turned = turn([p[0][l], p[1][l], p[2][l]], improve, false);
+        for a in 0..3 {
+            t[a][l] = turned[a];
+        }
+    }
+    // `nearest_3d`: per axis the nearest vertex's key part, the offset from it, and the side
+    // of it the point lies on as `side` = ±1 (+1: toward `cell + 1`). `round_split` with
+    // both of its branches computed: the split of `½ − v` or of `v + ½`.
+    let mut part = [[0i64; LANES]; 3];
+    let mut d = [[R::ZERO; LANES]; 3];
+    let mut side = [[R::ZERO; LANES]; 3];
+    for a in 0..3 {
+        let mut w = [0.0f64; LANES];
+        for l in 0..LANES {
+            let v = t[a][l];
+            w[l] = if v < 0.0 { 0.5 - v } else { v + 0.5 };
+        }
+        let mut cell = [0i32; LANES];
+        let mut frac = [0.0f64; LANES];
+        f64::split_lanes(&w, &mut cell, &mut frac);
+        for l in 0..LANES {
+            let below = t[a][l] < 0.0;
+            let f = frac[l];
+            let c = if below {
+                cell[l].wrapping_neg()
+            } else {
+                cell[l]
+            };
+            let x = real::<R>(if below { 0.5 - f } else { f - 0.5 });
+            part[a][l] = share(a, i64::from(c));
+            d[a][l] = x;
+            side[a][l] = if x >= R::ZERO { R::ONE } else { -R::ONE };
+        }
     }
     let mut value = [R::ZERO; LANES];
     for lattice in 0..2 {
@@ -693,12 +746,64 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
         } else {
             seed ^ SEED_FLIP_3D
         };
+        // `pair_3d`'s second vertex: one step toward the point (`x − side`, which is `x − 1`
+        // or `x + 1` exactly) along the first axis of the largest offset.
+        let mut axis = [0i32; LANES];
+        let mut e = d;
         for l in 0..LANES {
-            for (c, e) in pair_3d(cell[l], d[l], &up[l]) {
-                value[l] = value[l] + term(key(seed, c), e, inverse_radius);
+            let [ax, ay, az] = [d[0][l].abs(), d[1][l].abs(), d[2][l].abs()];
+            let y = ay > ax;
+            let z = az > if y { ay } else { ax };
+            axis[l] = if z { 2 } else { i32::from(y) };
+            let chosen = [!y && !z, y && !z, z];
+            for a in 0..3 {
+                let x = d[a][l];
+                e[a][l] = if chosen[a] { x - side[a][l] } else { x };
+            }
+        }
+        // The two vertices' gradients ((c ± 1)·P = c·P ± P, wrapping: the second vertex's
+        // key from the nearest's), and `other_lattice_3d`'s key parts.
+        let mut g = [[[R::ZERO; LANES]; 3]; 2];
+        for l in 0..LANES {
+            let near = seed ^ part[0][l] ^ part[1][l] ^ part[2][l];
+            let a = axis[l] as usize % 3;
+            let up = side[a][l] > R::ZERO;
+            let step = if up {
+                PRIME[a]
+            } else {
+                PRIME[a].wrapping_neg()
+            };
+            let next = near ^ part[a][l] ^ part[a][l].wrapping_add(step);
+            for (v, key) in [near, next].into_iter().enumerate() {
+                let row = gradient::<R, 3>(key.wrapping_mul(HASH_MULTIPLIER));
+                for b in 0..3 {
+                    g[v][b][l] = row[b];
+                }
             }
             if lattice == 0 {
-                other_lattice_3d(&mut cell[l], &mut d[l], &mut up[l]);
+                for b in 0..3 {
+                    if side[b][l] > R::ZERO {
+                        part[b][l] = part[b][l].wrapping_add(PRIME[b]);
+                    }
+                }
+            }
+        }
+        for (v, offset) in [&d, &e].into_iter().enumerate() {
+            for l in 0..LANES {
+                let gl = [g[v][0][l], g[v][1][l], g[v][2][l]];
+                let dl = [offset[0][l], offset[1][l], offset[2][l]];
+                value[l] = value[l] + term_of(gl, dl, inverse_radius);
+            }
+        }
+        if lattice == 0 {
+            // `other_lattice_3d`'s offsets and sides: `x ∓ ½` toward the other lattice's
+            // nearest vertex, whose side is the other one.
+            for a in 0..3 {
+                for l in 0..LANES {
+                    let up = side[a][l] > R::ZERO;
+                    d[a][l] = d[a][l] - if up { half } else { -half };
+                    side[a][l] = -side[a][l];
+                }
             }
         }
     }
@@ -1529,7 +1634,7 @@ mod tests {
     /// The lane bodies (`sample_lanes`, 2D and 3D, OpenSimplex2 and OpenSimplex2S) give
     /// `sample`'s bits at each lane, for every orientation, several seeds and every number
     /// type: random points near and far from the origin, points on the lattices' edges and
-    /// vertices (multiples of ¼), and non-finite ones.
+    /// vertices (multiples of ¼, also on the main diagonal), and non-finite ones.
     #[test]
     fn lanes_are_the_point_samples() {
         fn check<R: Real, const D: usize, N: Noise<R, D>>(noise: &N, p: &[[f32; LANES]; D]) {
@@ -1576,6 +1681,13 @@ mod tests {
                         core::array::from_fn(|_| core::array::from_fn(|_| coordinate(round)));
                     all_types(&noise, &p3);
                     all_types(&smooth, &p3);
+                    if round % 4 == 2 {
+                        // On the main diagonal at multiples of ¼, where turned offsets are
+                        // exactly ½ (standard: (−½, −½, −½) turns to itself).
+                        let v: [f32; LANES] = core::array::from_fn(|_| coordinate(round));
+                        all_types(&noise, &[v; 3]);
+                        all_types(&smooth, &[v; 3]);
+                    }
                 }
             }
         }
