@@ -373,13 +373,12 @@ fn floor_split<R: Real>(v: f64) -> (i32, R) {
 /// `fastRound`) and the offset from it, in `[−½, ½]`, in `R`.
 #[inline(always)]
 fn round_split<R: Real>(v: f64) -> (i32, R) {
-    if v < 0.0 {
-        let (cell, frac) = Real::split(0.5 - v);
-        (cell.wrapping_neg(), real::<R>(0.5 - frac))
-    } else {
-        let (cell, frac) = Real::split(v + 0.5);
-        (cell, real::<R>(frac - 0.5))
-    }
+    // The split of `½ − v` (v < 0) or of `v + ½`, each choice a select rather than a branch
+    // (the sign of a turned coordinate is a coin flip for the predictor).
+    let below = v < 0.0;
+    let (cell, frac) = Real::split(if below { 0.5 - v } else { v + 0.5 });
+    let cell = if below { cell.wrapping_neg() } else { cell };
+    (cell, real::<R>(if below { 0.5 - frac } else { frac - 0.5 }))
 }
 
 /// A sample's running sum over its vertices: `Σ τ⁴ (g·d)` with `τ = 1 − |d|²/r²` and, with
@@ -871,12 +870,19 @@ fn nearest_3d<R: Real>(t: [f64; 3]) -> ([i64; 3], [R; 3], [bool; 3]) {
 fn pair_3d<R: Real>(cell: [i64; 3], d: [R; 3], up: &[bool; 3]) -> [([i64; 3], [R; 3]); 2] {
     let axis = largest(d.map(Real::abs));
     let (mut next, mut e) = (cell, d);
-    if up[axis] {
-        next[axis] += 1;
-        e[axis] = e[axis] - R::ONE;
-    } else {
-        next[axis] -= 1;
-        e[axis] = e[axis] + R::ONE;
+    // One step toward the point along `axis`: `x − 1`, or `x − (−1) = x + 1`. Each axis
+    // takes or keeps its step by selects: indexed by `axis`, the compiler branched three
+    // ways on it, a coin flip for the predictor.
+    for a in 0..3 {
+        let chosen = a == axis;
+        let up = up[a];
+        next[a] += if chosen { if up { 1 } else { -1 } } else { 0 };
+        let x = e[a];
+        e[a] = if chosen {
+            x - if up { R::ONE } else { -R::ONE }
+        } else {
+            x
+        };
     }
     [(cell, d), (next, e)]
 }
