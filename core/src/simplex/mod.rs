@@ -72,6 +72,7 @@ pub use open::{Improve, OpenSimplex2, OpenSimplex2S};
 use crate::batch::LANES;
 use crate::hash::prime::PrimeHash;
 use crate::lattice::perlin::{grad3, grad4_dot, gradient_of};
+use crate::real::sealed::SOFT_FLOAT;
 use crate::{Real, arch};
 
 /// Simplex noise in 1 to 4 dimensions, continuous (C²) with its analytic gradient.
@@ -270,7 +271,15 @@ fn split<R: Real, const N: usize>(x: &[R; N], cell: &mut [i32; N], frac: &mut [R
 #[inline(always)]
 fn step_down<R: Real>(t: R) -> (i32, R) {
     let up = t >= R::ONE;
-    (i32::from(up), if up { t - R::ONE } else { t })
+    if SOFT_FLOAT {
+        // Where a subtraction is a library call, only where it is needed.
+        (i32::from(up), if up { t - R::ONE } else { t })
+    } else {
+        // `t − 1` or `t − 0 = t`, the step subtracted as a number: as a select, the compiler
+        // made the choice a branch, a coin flip for the predictor (bench/README.md).
+        let up = i32::from(up);
+        (up, t - R::from_i32(up))
+    }
 }
 
 /// Whether the `j`-th corner of a `dims`-dimensional simplex is one step along the axis of
