@@ -40,11 +40,12 @@
 //! overflows. On cores without a double-precision unit the turn costs a few soft-float
 //! operations per sample; [`Simplex`](super::Simplex) is the cheaper noise there.
 //!
-//! **Batches** ([`Noise::fill_grid`](crate::Noise::fill_grid), `fill_points`): OpenSimplex2 in
-//! 2D and 3D runs its vertices over 16 points at once, each step a loop over the points so
-//! that the compiler vectorises what it can; every vertex of every point is computed, one out
-//! of reach adding an exact 0 where a point sample skips it, so batches are `sample`'s bits.
-//! OpenSimplex2S and 4D, whose vertex choices branch per point, sample point by point.
+//! **Batches** ([`Noise::fill_grid`](crate::Noise::fill_grid), `fill_points`): both noises in
+//! 2D and OpenSimplex2 in 3D run their vertices over 16 points at once, each step a loop over
+//! the points so that the compiler vectorises what it can; every vertex of every point is
+//! computed, one out of reach adding an exact 0 where a point sample skips it, so batches are
+//! `sample`'s bits. 3D OpenSimplex2S and 4D, whose vertex choices branch per point, sample
+//! point by point.
 //!
 //! **No periodic variant**: the rotated and diagonal-offset lattices have no period along the
 //! axes (psrdnoise, Gustavson & McEwan 2022, builds a periodic 2D simplex lattice instead).
