@@ -289,9 +289,7 @@ pub(crate) fn fill_points<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     points: [&[R]; D],
     out: &mut [R],
 ) -> Result<(), Error> {
-    for axis in points {
-        check_len(axis.len(), out.len())?;
-    }
+    check_points(&points, out.len())?;
     let mut lanes = [[R::ZERO; LANES]; D];
     let mut values = [R::ZERO; LANES];
     let mut axes = points.map(|axis| axis.chunks(LANES));
@@ -316,9 +314,7 @@ pub(crate) fn fill_points_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: u
     points: [&[R]; D],
     out: &mut [R],
 ) -> Result<(), Error> {
-    for axis in points {
-        check_len(axis.len(), out.len())?;
-    }
+    check_points(&points, out.len())?;
     for (i, o) in out.iter_mut().enumerate() {
         *o = noise.sample(core::array::from_fn(|a| points[a][i]));
     }
@@ -337,6 +333,14 @@ pub(crate) fn store_lanes<R: Real>(out: &mut [R], v: &[R; LANES]) {
             }
         }
     }
+}
+
+/// [`Error::BufferLength`] unless every axis of `points` has `len` elements.
+fn check_points<R, const D: usize>(points: &[&[R]; D], len: usize) -> Result<(), Error> {
+    for axis in points {
+        check_len(axis.len(), len)?;
+    }
+    Ok(())
 }
 
 pub(crate) fn check_len(expected: usize, found: usize) -> Result<(), Error> {
