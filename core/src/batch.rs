@@ -262,9 +262,9 @@ pub(crate) fn fill_grid<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
 
 /// [`fill_grid`] for a noise without a lane body: each row's points one by one, through
 /// `sample`, the same values in the same order. For the OpenSimplex noises whose lanes are
-/// point samples (3D OpenSimplex2S, 4D) this is faster than `fill_grid`'s chunks of 16 with
-/// the same instructions: measured, not explained (bench/README.md); cellular noise, whose
-/// lanes are point samples too, takes its points' time in `fill_grid`.
+/// point samples (4D) this is faster than `fill_grid`'s chunks of 16 with the same
+/// instructions: measured, not explained (bench/README.md); cellular noise, whose lanes are
+/// point samples too, takes its points' time in `fill_grid`.
 pub(crate) fn fill_grid_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: usize>(
     noise: &N,
     grid: &Grid<R, D>,

@@ -41,11 +41,11 @@
 //! operations per sample; [`Simplex`](super::Simplex) is the cheaper noise there.
 //!
 //! **Batches** ([`Noise::fill_grid`](crate::Noise::fill_grid), `fill_points`): both noises in
-//! 2D and OpenSimplex2 in 3D run their vertices over 16 points at once, each step a loop over
-//! the points so that the compiler vectorises what it can; every vertex of every point is
-//! computed, one out of reach adding an exact 0 where a point sample skips it, so batches are
-//! `sample`'s bits. 3D OpenSimplex2S and 4D, whose vertex choices branch per point, sample
-//! point by point.
+//! 2D and 3D run their vertices over 16 points at once, each step a loop over the points so
+//! that the compiler vectorises what it can; every vertex (3D OpenSimplex2S: every candidate)
+//! of every point is computed, one out of reach adding an exact 0 where a point sample skips
+//! it and one not chosen adding nothing, so batches are `sample`'s bits. 4D, whose vertex
+//! choices branch per point over more candidates, samples point by point.
 //!
 //! **No periodic variant**: the rotated and diagonal-offset lattices have no period along the
 //! axes (psrdnoise, Gustavson & McEwan 2022, builds a periodic 2D simplex lattice instead).
@@ -526,12 +526,7 @@ fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
             }
         }
         3 => {
-            let i = ((h ^ (h >> 58)) >> 2) as u32 & 255;
-            let row = if cfg!(feature = "small") {
-                &GRAD3[(i % 48) as usize]
-            } else {
-                &CYCLED3[i as usize]
-            };
+            let row = row_3d(h);
             for a in 0..D {
                 g[a] = R::from_ratio(row[a], 29);
             }
@@ -545,6 +540,18 @@ fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
         }
     }
     g
+}
+
+/// [`gradient`]'s 3D row for the mixed hash `h`, in units of 2⁻²⁹ (the lane bodies convert
+/// the rows of 16 lanes together).
+#[inline(always)]
+fn row_3d(h: i64) -> [i32; 3] {
+    let i = ((h ^ (h >> 58)) >> 2) as u32 & 255;
+    if cfg!(feature = "small") {
+        GRAD3[(i % 48) as usize]
+    } else {
+        CYCLED3[i as usize]
+    }
 }
 
 /// The offset from the 2D skewed lattice vertex `cell + step` of a point whose unskewed offset
@@ -763,7 +770,7 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
         }
         // The two vertices' gradients ((c ± 1)·P = c·P ± P, wrapping: the second vertex's
         // key from the nearest's), and `other_lattice_3d`'s key parts.
-        let mut g = [[[R::ZERO; LANES]; 3]; 2];
+        let mut rows = [[[0i32; LANES]; 3]; 2];
         for l in 0..LANES {
             let near = seed ^ part[0][l] ^ part[1][l] ^ part[2][l];
             let a = axis[l] as usize % 3;
@@ -775,9 +782,9 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
             };
             let next = near ^ part[a][l] ^ part[a][l].wrapping_add(step);
             for (v, key) in [near, next].into_iter().enumerate() {
-                let row = gradient::<R, 3>(key.wrapping_mul(HASH_MULTIPLIER));
+                let row = row_3d(key.wrapping_mul(HASH_MULTIPLIER));
                 for b in 0..3 {
-                    g[v][b][l] = row[b];
+                    rows[v][b][l] = row[b];
                 }
             }
             if lattice == 0 {
@@ -790,7 +797,7 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
         }
         for (v, offset) in [&d, &e].into_iter().enumerate() {
             for l in 0..LANES {
-                let gl = [g[v][0][l], g[v][1][l], g[v][2][l]];
+                let gl = [0, 1, 2].map(|b| R::from_ratio(rows[v][b][l], 29));
                 let dl = [offset[0][l], offset[1][l], offset[2][l]];
                 value[l] = value[l] + term_of(gl, dl, inverse_radius);
             }
@@ -806,6 +813,114 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
                 }
             }
         }
+    }
+    finish_lanes(&value, kernel, out);
+}
+
+/// OpenSimplex2S's 3D noise at [`LANES`] points, bit for bit [`evaluate`] at each
+/// ([`smooth_3d`]'s choices in its order): [`Choices::around`] by axis with the lanes
+/// innermost, then each of the 14 candidate vertices of every lane (hashed in a scalar loop,
+/// its term over the lanes), added where `smooth_3d` adds it (a select, not a branch: its
+/// choices follow whether earlier vertices are in reach, a coin flip per point).
+#[inline]
+#[allow(
+    clippy::needless_range_loop,
+    reason = "each step loops over the lanes innermost, indexing the axis arrays, so that it vectorises"
+)]
+fn smooth_3d_lanes<R: Real>(
+    seed: i64,
+    improve: Improve,
+    p: &[[R; LANES]; 3],
+    out: &mut [R; LANES],
+) {
+    let kernel = &SMOOTH[3];
+    let inverse_radius = real::<R>(kernel.inverse_radius);
+    let half = R::from_ratio(1, 1);
+    let mut t = [[0.0f64; LANES]; 3];
+    for l in 0..LANES {
+        let turned = turn([p[0][l], p[1][l], p[2][l]], improve, true);
+        for a in 0..3 {
+            t[a][l] = turned[a];
+        }
+    }
+    // `Choices::around`: per set (corners, centres), axis and choice, each lane's key part
+    // and offset.
+    let mut keys = [[[[0i64; LANES]; 2]; 3]; 2];
+    let mut offsets = [[[[R::ZERO; LANES]; 2]; 3]; 2];
+    for a in 0..3 {
+        let mut cell = [0i32; LANES];
+        let mut frac = [0.0f64; LANES];
+        f64::split_lanes(&t[a], &mut cell, &mut frac);
+        for l in 0..LANES {
+            let f = real::<R>(frac[l]);
+            // (c + s)·P = c·P + s·P, wrapping.
+            let p0 = share(a, i64::from(cell[l]));
+            let p1 = p0.wrapping_add(PRIME[a]);
+            let p2 = p1.wrapping_add(PRIME[a]);
+            let centred = f - half;
+            let upper = f >= half;
+            keys[0][a][0][l] = if upper { p1 } else { p0 };
+            keys[0][a][1][l] = if upper { p0 } else { p1 };
+            offsets[0][a][0][l] = if upper { f - R::ONE } else { f };
+            offsets[0][a][1][l] = if upper { f } else { f - R::ONE };
+            keys[1][a][0][l] = p1;
+            keys[1][a][1][l] = if upper { p2 } else { p0 };
+            offsets[1][a][0][l] = centred;
+            offsets[1][a][1][l] = if upper {
+                centred - R::ONE
+            } else {
+                centred + R::ONE
+            };
+        }
+    }
+    let seeds = [seed, seed ^ SEED_FLIP_3D];
+    // A candidate's term in every lane (an exact 0 out of reach) and whether it is in reach.
+    let candidate = |set: usize, pick: [usize; 3]| {
+        let mut rows = [[0i32; LANES]; 3];
+        for l in 0..LANES {
+            let k = &keys[set];
+            let key = seeds[set] ^ k[0][pick[0]][l] ^ k[1][pick[1]][l] ^ k[2][pick[2]][l];
+            let row = row_3d(key.wrapping_mul(HASH_MULTIPLIER));
+            for b in 0..3 {
+                rows[b][l] = row[b];
+            }
+        }
+        let mut terms = [R::ZERO; LANES];
+        let mut inside = [false; LANES];
+        for l in 0..LANES {
+            let o = &offsets[set];
+            let d = [o[0][pick[0]][l], o[1][pick[1]][l], o[2][pick[2]][l]];
+            let g = [0, 1, 2].map(|b| R::from_ratio(rows[b][l], 29));
+            inside[l] = reach(d, inverse_radius) > R::ZERO;
+            terms[l] = term_of(g, d, inverse_radius);
+        }
+        (terms, inside)
+    };
+    // Adds `terms` where `taken` (+0 elsewhere: a sum that starts at +0 never becomes −0).
+    let add = |value: &mut [R; LANES], terms: &[R; LANES], taken: &[bool; LANES]| {
+        for l in 0..LANES {
+            value[l] = value[l] + if taken[l] { terms[l] } else { R::ZERO };
+        }
+    };
+    let every = [true; LANES];
+    let mut value = [R::ZERO; LANES];
+    add(&mut value, &candidate(0, NONE).0, &every);
+    add(&mut value, &candidate(1, NONE).0, &every);
+    let mut moved_alone = [[false; LANES]; 3];
+    for a in 0..3 {
+        let (terms, flipped) = candidate(0, ALONG[a]);
+        add(&mut value, &terms, &every);
+        let not_flipped = flipped.map(|f| !f);
+        add(&mut value, &candidate(0, OTHERS[a]).0, &not_flipped);
+        let (terms, inside) = candidate(1, ALONG[a]);
+        add(&mut value, &terms, &not_flipped);
+        for l in 0..LANES {
+            moved_alone[a][l] = not_flipped[l] && inside[l];
+        }
+    }
+    for a in 0..3 {
+        let not_moved = moved_alone[a].map(|m| !m);
+        add(&mut value, &candidate(1, OTHERS[a]).0, &not_moved);
     }
     finish_lanes(&value, kernel, out);
 }
@@ -1312,13 +1427,17 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                // 2D and OpenSimplex2's 3D have lane bodies (`has_lanes`); the rest go point
-                // by point (3D OpenSimplex2S's vertex choices as lanes took the points' time).
+                // 2D and 3D have lane bodies (`has_lanes`); 4D goes point by point (its
+                // vertex choices branch per point).
                 if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
                     return lanes_2d::<R, { $smooth }>(self.seed, self.improve, p, out);
                 }
-                if let (false, Ok(p)) = ($smooth, <&[[R; LANES]; 3]>::try_from(&p[..])) {
-                    return fast_3d_lanes(self.seed, self.improve, p, out);
+                if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
+                    return if $smooth {
+                        smooth_3d_lanes(self.seed, self.improve, p, out)
+                    } else {
+                        fast_3d_lanes(self.seed, self.improve, p, out)
+                    };
                 }
                 for (l, o) in out.iter_mut().enumerate() {
                     *o = self.sample(crate::batch::lane(p, l));
@@ -1329,7 +1448,7 @@ macro_rules! open_simplex_impls {
                 grid: &crate::batch::Grid<R, $d>,
                 out: &mut [R],
             ) -> Result<(), crate::Error> {
-                if has_lanes($smooth, $d) {
+                if has_lanes($d) {
                     crate::batch::fill_grid(self, grid, out)
                 } else {
                     // Its lanes are point samples: a plain loop of them is faster
@@ -1339,7 +1458,7 @@ macro_rules! open_simplex_impls {
                 }
             }
             fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), crate::Error> {
-                if has_lanes($smooth, $d) {
+                if has_lanes($d) {
                     crate::batch::fill_points(self, points, out)
                 } else {
                     crate::batch::fill_points_pointwise(self, points, out)
@@ -1358,10 +1477,10 @@ macro_rules! open_simplex_impls {
     };
 }
 
-/// Whether `sample_lanes` of the noise (`smooth`: OpenSimplex2S) in `dims` dimensions has a
-/// lane body (`lanes_2d`, `fast_3d_lanes`) rather than a loop of point samples.
-const fn has_lanes(smooth: bool, dims: usize) -> bool {
-    dims == 2 || dims == 3 && !smooth
+/// Whether `sample_lanes` of either noise in `dims` dimensions has a lane body (`lanes_2d`,
+/// `fast_3d_lanes`, `smooth_3d_lanes`) rather than a loop of point samples.
+const fn has_lanes(dims: usize) -> bool {
+    dims == 2 || dims == 3
 }
 
 open_simplex_impls!(OpenSimplex2, false, FAST);
