@@ -695,6 +695,27 @@ fn lanes_2d<R: Real, const S: bool>(
     finish_lanes(&value, kernel, out);
 }
 
+/// [`turn`] of [`LANES`] 3D points, by axis.
+#[inline(always)]
+#[allow(
+    clippy::needless_range_loop,
+    reason = "the turned points are stored by axis with the lanes innermost"
+)]
+fn turn_3d_lanes<R: Real>(
+    p: &[[R; LANES]; 3],
+    improve: Improve,
+    smooth: bool,
+) -> [[f64; LANES]; 3] {
+    let mut t = [[0.0f64; LANES]; 3];
+    for l in 0..LANES {
+        let turned = turn([p[0][l], p[1][l], p[2][l]], improve, smooth);
+        for a in 0..3 {
+            t[a][l] = turned[a];
+        }
+    }
+    t
+}
+
 /// OpenSimplex2's 3D noise at [`LANES`] points, bit for bit [`evaluate`] at each
 /// ([`fast_3d`]'s vertices in its order, each lane's through [`term_of`]). Each step is a
 /// loop over the lanes with the lanes innermost and selects for `fast_3d`'s branches, so
@@ -710,13 +731,7 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
     let kernel = &FAST[3];
     let inverse_radius = real::<R>(kernel.inverse_radius);
     let half = R::from_ratio(1, 1);
-    let mut t = [[0.0f64; LANES]; 3];
-    for l in 0..LANES {
-        let turned = turn([p[0][l], p[1][l], p[2][l]], improve, false);
-        for a in 0..3 {
-            t[a][l] = turned[a];
-        }
-    }
+    let t = turn_3d_lanes(p, improve, false);
     // `nearest_3d`: per axis the nearest vertex's key part, the offset from it, and the side
     // of it the point lies on as `side` = ±1 (+1: toward `cell + 1`). `round_split` with
     // both of its branches computed: the split of `½ − v` or of `v + ½`.
@@ -836,13 +851,7 @@ fn smooth_3d_lanes<R: Real>(
     let kernel = &SMOOTH[3];
     let inverse_radius = real::<R>(kernel.inverse_radius);
     let half = R::from_ratio(1, 1);
-    let mut t = [[0.0f64; LANES]; 3];
-    for l in 0..LANES {
-        let turned = turn([p[0][l], p[1][l], p[2][l]], improve, true);
-        for a in 0..3 {
-            t[a][l] = turned[a];
-        }
-    }
+    let t = turn_3d_lanes(p, improve, true);
     // `Choices::around`: per set (corners, centres), axis and choice, each lane's key part
     // and offset.
     let mut keys = [[[[0i64; LANES]; 2]; 3]; 2];
