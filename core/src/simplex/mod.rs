@@ -268,7 +268,7 @@ fn split<R: Real, const N: usize>(x: &[R; N], cell: &mut [i32; N], frac: &mut [R
 
 /// The targets whose cores predict branches deep in an out-of-order pipeline, where a
 /// mispredicted coin flip costs more than the arithmetic that avoids it.
-const OUT_OF_ORDER: bool = cfg!(any(
+pub(crate) const OUT_OF_ORDER: bool = cfg!(any(
     target_arch = "x86_64",
     target_arch = "x86",
     target_arch = "aarch64"

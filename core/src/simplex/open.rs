@@ -44,8 +44,9 @@
 //! 2D and 3D run their vertices over 16 points at once, each step a loop over the points so
 //! that the compiler vectorises what it can; every vertex (3D OpenSimplex2S: every candidate)
 //! of every point is computed, one out of reach adding an exact 0 where a point sample skips
-//! it and one not chosen adding nothing, so batches are `sample`'s bits. 4D, whose vertex
-//! choices branch per point over more candidates, samples point by point.
+//! it and one not chosen adding nothing, so batches are `sample`'s bits (3D OpenSimplex2S on
+//! x86 and AArch64 only, where branches cost more than its extra candidates). 4D, whose
+//! vertex choices branch per point over more candidates, samples point by point.
 //!
 //! **No periodic variant**: the rotated and diagonal-offset lattices have no period along the
 //! axes (psrdnoise, Gustavson & McEwan 2022, builds a periodic 2D simplex lattice instead).
@@ -68,6 +69,8 @@
 use crate::Real;
 use crate::batch::LANES;
 use crate::real::sealed::Sealed;
+
+use super::OUT_OF_ORDER;
 
 /// The primes that hash a vertex's cell, by axis.
 const PRIME: [i64; 4] = [
@@ -1436,12 +1439,12 @@ macro_rules! open_simplex_impls {
             }
             #[inline]
             fn sample_lanes(&self, p: &[[R; LANES]; $d], out: &mut [R; LANES]) {
-                // 2D and 3D have lane bodies (`has_lanes`); 4D goes point by point (its
-                // vertex choices branch per point).
+                // Lane bodies where `has_lanes` says; elsewhere point by point (4D's vertex
+                // choices branch per point).
                 if let Ok(p) = <&[[R; LANES]; 2]>::try_from(&p[..]) {
                     return lanes_2d::<R, { $smooth }>(self.seed, self.improve, p, out);
                 }
-                if let Ok(p) = <&[[R; LANES]; 3]>::try_from(&p[..]) {
+                if let (true, Ok(p)) = (has_lanes($smooth, 3), <&[[R; LANES]; 3]>::try_from(&p[..])) {
                     return if $smooth {
                         smooth_3d_lanes(self.seed, self.improve, p, out)
                     } else {
@@ -1457,7 +1460,7 @@ macro_rules! open_simplex_impls {
                 grid: &crate::batch::Grid<R, $d>,
                 out: &mut [R],
             ) -> Result<(), crate::Error> {
-                if has_lanes($d) {
+                if has_lanes($smooth, $d) {
                     crate::batch::fill_grid(self, grid, out)
                 } else {
                     // Its lanes are point samples: a plain loop of them is faster
@@ -1467,7 +1470,7 @@ macro_rules! open_simplex_impls {
                 }
             }
             fn fill_points(&self, points: [&[R]; $d], out: &mut [R]) -> Result<(), crate::Error> {
-                if has_lanes($d) {
+                if has_lanes($smooth, $d) {
                     crate::batch::fill_points(self, points, out)
                 } else {
                     crate::batch::fill_points_pointwise(self, points, out)
@@ -1486,10 +1489,13 @@ macro_rules! open_simplex_impls {
     };
 }
 
-/// Whether `sample_lanes` of either noise in `dims` dimensions has a lane body (`lanes_2d`,
-/// `fast_3d_lanes`, `smooth_3d_lanes`) rather than a loop of point samples.
-const fn has_lanes(dims: usize) -> bool {
-    dims == 2 || dims == 3
+/// Whether `sample_lanes` of the noise (`smooth`: OpenSimplex2S) in `dims` dimensions has a
+/// lane body (`lanes_2d`, `fast_3d_lanes`, `smooth_3d_lanes`) rather than a loop of point
+/// samples. 3D OpenSimplex2S's lanes compute all 14 candidate vertices where a point takes
+/// about half of them: faster only where branches are costly (`OUT_OF_ORDER`; on the
+/// microcontrollers, with floats in software, the candidates would cost twice the points).
+const fn has_lanes(smooth: bool, dims: usize) -> bool {
+    dims == 2 || dims == 3 && (!smooth || OUT_OF_ORDER)
 }
 
 open_simplex_impls!(OpenSimplex2, false, FAST);
