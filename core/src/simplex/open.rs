@@ -377,10 +377,22 @@ fn floor_split<R: Real>(v: f64) -> (i32, R) {
 /// `fastRound`) and the offset from it, in `[−½, ½]`, in `R`.
 #[inline(always)]
 fn round_split<R: Real>(v: f64) -> (i32, R) {
-    // The split of `½ − v` (v < 0) or of `v + ½`, each choice a select rather than a branch
-    // (the sign of a turned coordinate is a coin flip for the predictor).
+    let (cell, frac) = Real::split(round_input(v));
+    round_output(v, cell, frac)
+}
+
+/// What [`round_split`] splits: `½ − v` (v < 0) or `v + ½`. Each choice here and in
+/// [`round_output`] is a select rather than a branch (the sign of a turned coordinate is a
+/// coin flip for the predictor), and the lane bodies split 16 of these at once.
+#[inline(always)]
+fn round_input(v: f64) -> f64 {
+    if v < 0.0 { 0.5 - v } else { v + 0.5 }
+}
+
+/// [`round_split`]'s cell and offset from the split `(cell, frac)` of [`round_input`]`(v)`.
+#[inline(always)]
+fn round_output<R: Real>(v: f64, cell: i32, frac: f64) -> (i32, R) {
     let below = v < 0.0;
-    let (cell, frac) = Real::split(if below { 0.5 - v } else { v + 0.5 });
     let cell = if below { cell.wrapping_neg() } else { cell };
     (cell, real::<R>(if below { 0.5 - frac } else { frac - 0.5 }))
 }
@@ -504,7 +516,12 @@ fn term<R: Real, const D: usize>(key: i64, d: [R; D], inverse_radius: R) -> R {
 /// [`term`] of the vertex whose gradient is `g`.
 #[inline(always)]
 fn term_of<R: Real, const D: usize>(g: [R; D], d: [R; D], inverse_radius: R) -> R {
-    let tau = reach(d, inverse_radius);
+    term_at(g, d, reach(d, inverse_radius))
+}
+
+/// [`term_of`] where `tau` is the vertex's [`reach`].
+#[inline(always)]
+fn term_at<R: Real, const D: usize>(g: [R; D], d: [R; D], tau: R) -> R {
     let tau = if tau > R::ZERO { tau } else { R::ZERO };
     let dot = dot_of(g, d);
     let tau2 = tau.mul_fraction(tau);
@@ -736,29 +753,18 @@ fn fast_3d_lanes<R: Real>(seed: i64, improve: Improve, p: &[[R; LANES]; 3], out:
     let half = R::from_ratio(1, 1);
     let t = turn_3d_lanes(p, improve, false);
     // `nearest_3d`: per axis the nearest vertex's key part, the offset from it, and the side
-    // of it the point lies on as `side` = ±1 (+1: toward `cell + 1`). `round_split` with
-    // both of its branches computed: the split of `½ − v` or of `v + ½`.
+    // of it the point lies on as `side` = ±1 (+1: toward `cell + 1`); `round_split` of 16
+    // coordinates.
     let mut part = [[0i64; LANES]; 3];
     let mut d = [[R::ZERO; LANES]; 3];
     let mut side = [[R::ZERO; LANES]; 3];
     for a in 0..3 {
-        let mut w = [0.0f64; LANES];
-        for l in 0..LANES {
-            let v = t[a][l];
-            w[l] = if v < 0.0 { 0.5 - v } else { v + 0.5 };
-        }
+        let w = t[a].map(round_input);
         let mut cell = [0i32; LANES];
         let mut frac = [0.0f64; LANES];
         f64::split_lanes(&w, &mut cell, &mut frac);
         for l in 0..LANES {
-            let below = t[a][l] < 0.0;
-            let f = frac[l];
-            let c = if below {
-                cell[l].wrapping_neg()
-            } else {
-                cell[l]
-            };
-            let x = real::<R>(if below { 0.5 - f } else { f - 0.5 });
+            let (c, x) = round_output::<R>(t[a][l], cell[l], frac[l]);
             part[a][l] = share(a, i64::from(c));
             d[a][l] = x;
             side[a][l] = if x >= R::ZERO { R::ONE } else { -R::ONE };
@@ -864,6 +870,8 @@ fn smooth_3d_lanes<R: Real>(
         let mut frac = [0.0f64; LANES];
         f64::split_lanes(&t[a], &mut cell, &mut frac);
         for l in 0..LANES {
+            // `Choices::around`'s, with selects for its branch (written apart: through one
+            // function for both, the point sample took 3–4% more time).
             let f = real::<R>(frac[l]);
             // (c + s)·P = c·P + s·P, wrapping.
             let p0 = share(a, i64::from(cell[l]));
@@ -903,8 +911,9 @@ fn smooth_3d_lanes<R: Real>(
             let o = &offsets[set];
             let d = [o[0][pick[0]][l], o[1][pick[1]][l], o[2][pick[2]][l]];
             let g = [0, 1, 2].map(|b| R::from_ratio(rows[b][l], 29));
-            inside[l] = reach(d, inverse_radius) > R::ZERO;
-            terms[l] = term_of(g, d, inverse_radius);
+            let tau = reach(d, inverse_radius);
+            inside[l] = tau > R::ZERO;
+            terms[l] = term_at(g, d, tau);
         }
         (terms, inside)
     };
@@ -1465,7 +1474,7 @@ macro_rules! open_simplex_impls {
                 } else {
                     // Its lanes are point samples: a plain loop of them is faster
                     // (`fill_grid_pointwise`; bench/README.md, "OpenSimplex2S 3D and 4D
-                    // grids point by point").
+                    // grids point by point", measured before 3D had lanes).
                     crate::batch::fill_grid_pointwise(self, grid, out)
                 }
             }
