@@ -618,22 +618,64 @@ macro_rules! impl_real_float {
             #[cfg_attr(feature = "small", inline(never))]
             #[cfg_attr(not(feature = "small"), inline)]
             fn split(self) -> (i32, Self) {
-                // In range, a truncating cast and one correction give floor() without libm;
-                // `as` is defined (saturating, NaN → 0) on every target.
-                if (-2_147_483_648.0..2_147_483_648.0).contains(&self) {
-                    let t = self as i32;
-                    let cell = if (t as $t) > self { t - 1 } else { t };
-                    // Exact: both are in the same binade or the result is an integer.
-                    let frac = self - cell as $t;
+                /// In range, a truncating cast and one correction give floor() without libm;
+                /// `as` is defined (saturating, NaN → 0) on every target.
+                #[inline(always)]
+                fn by_cast(x: $t) -> (i32, $t) {
+                    if (-2_147_483_648.0..2_147_483_648.0).contains(&x) {
+                        let t = x as i32;
+                        let cell = if (t as $t) > x { t - 1 } else { t };
+                        // Exact: both are in the same binade or the result is an integer.
+                        let frac = x - cell as $t;
+                        if frac >= 1.0 {
+                            (cell.wrapping_add(1), 0.0)
+                        } else {
+                            // `+ 0.0` turns the -0.0 of -0.0 - 0.0 into +0.0.
+                            (cell, frac + 0.0)
+                        }
+                    } else {
+                        let (cell, frac) = split_far(x as f64);
+                        (cell, frac as $t)
+                    }
+                }
+                /// [`by_cast`] out of line, for coordinates beyond the x86 path.
+                #[cold]
+                #[inline(never)]
+                fn far(x: $t) -> (i32, $t) {
+                    by_cast(x)
+                }
+                // On x86, `as i32` saturates by clamping the float first (`maxss`, `minss`,
+                // then a NaN check), and the cell goes back to a float for the fraction: a
+                // long chain that every sample of a point path waits for. Within
+                // `(-2^22, 2^22)`, adding `MAGIC = 1.5·2^mantissa` and subtracting it again
+                // rounds to the nearest integer exactly, a float `r`; `floor` is `r` or
+                // `r − 1`, and its integer is read from the bits of `floor + MAGIC`. Each
+                // step is exact, so `frac` is `self − floor` rounded once, as in `by_cast`:
+                // the same results bit for bit, in float additions and a compare
+                // (bench/README.md). The choice of `1` or `0` is a select on a float compare:
+                // where its condition was also used as an integer, the compiler branched on
+                // it, a coin flip for the predictor. The rest of the range goes out of line,
+                // so that the loops over axes that call this stay unrolled.
+                const MAGIC: $t = 1.5 * (1u64 << (<$t>::MANTISSA_DIGITS - 1)) as $t;
+                const LIMIT: $t = 4_194_304.0;
+                if !cfg!(any(
+                    target_arch = "x86_64",
+                    all(target_arch = "x86", target_feature = "sse2")
+                )) {
+                    return by_cast(self);
+                }
+                if self.abs() < LIMIT {
+                    let r = (self + MAGIC) - MAGIC;
+                    let floor = r - if r > self { 1.0 } else { 0.0 };
+                    let frac = self - floor;
+                    let cell = (floor + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits()) as i32;
                     if frac >= 1.0 {
                         (cell.wrapping_add(1), 0.0)
                     } else {
-                        // `+ 0.0` turns the -0.0 of -0.0 - 0.0 into +0.0.
                         (cell, frac + 0.0)
                     }
                 } else {
-                    let (cell, frac) = split_far(self as f64);
-                    (cell, frac as $t)
+                    far(self)
                 }
             }
             #[inline]
@@ -661,9 +703,20 @@ macro_rules! impl_real_float {
                         frac[l] = if up { 0.0 } else { f + 0.0 };
                     }
                 } else {
-                    for l in 0..crate::batch::LANES {
-                        (cell[l], frac[l]) = x[l].split();
+                    // Out of line: a lane this far out is rare, and with `split`'s code here
+                    // the compiler stopped inlining this function.
+                    #[cold]
+                    #[inline(never)]
+                    fn each(
+                        x: &[$t; crate::batch::LANES],
+                        cell: &mut [i32; crate::batch::LANES],
+                        frac: &mut [$t; crate::batch::LANES],
+                    ) {
+                        for l in 0..crate::batch::LANES {
+                            (cell[l], frac[l]) = x[l].split();
+                        }
                     }
+                    each(x, cell, frac);
                 }
             }
             #[inline]
@@ -1055,6 +1108,70 @@ mod tests {
         let tiny = f32::from_bits(1); // smallest subnormal
         assert_eq!(tiny.split(), (0, tiny));
         assert_eq!((-tiny).split(), (0, 0.0));
+    }
+
+    /// `split` against its definition (`floor`, the fraction rounded once, a fraction that
+    /// rounds to 1 carried), with libm's `floor`: over every binade of both types, at and
+    /// beside integers, across the bounds of the x86 path (`±2²²`) and of `i32`. On x86 this
+    /// checks the path by adding `1.5·2^mantissa`; elsewhere the truncating cast.
+    #[test]
+    fn split_is_floor_and_fraction() {
+        macro_rules! check {
+            ($t:ty, $floor:path, $x:expr) => {{
+                let x: $t = $x;
+                let floor = $floor(x);
+                // Beyond `i32` the cell wraps (`split_floats_edges`).
+                if floor.abs() < 2_147_483_648.0 {
+                    let cell = floor as i64 as i32;
+                    let frac = x - floor;
+                    let want = if frac >= 1.0 {
+                        (cell.wrapping_add(1), 0.0)
+                    } else {
+                        (cell, frac + 0.0)
+                    };
+                    let got = x.split();
+                    assert!(
+                        got.0 == want.0 && got.1.to_bits() == want.1.to_bits(),
+                        "{x:e}: {got:?} against {want:?}"
+                    );
+                }
+            }};
+        }
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            state
+        };
+        for _ in 0..200_000 {
+            let bits = next();
+            check!(f32, libm::floorf, f32::from_bits((bits >> 32) as u32));
+            check!(f64, libm::floor, f64::from_bits(bits));
+            // Coordinates a sampler meets: below 2²⁴ in magnitude, every binade down to 2⁻⁴⁰.
+            let e = (bits % 64) as i32 - 40;
+            let m = (bits >> 8) as u32 as f64 / 4_294_967_296.0 + 1.0;
+            let v = m * libm::exp2(f64::from(e)) * if bits & 128 == 0 { 1.0 } else { -1.0 };
+            check!(f32, libm::floorf, v as f32);
+            check!(f64, libm::floor, v);
+        }
+        for i in -4_194_310i32..=4_194_310 {
+            if i.unsigned_abs() > 64 && i.unsigned_abs() < 4_194_300 && i % 97 != 0 {
+                continue;
+            }
+            let x = i as f32;
+            for v in [x, x.next_up(), x.next_down(), x + 0.5] {
+                check!(f32, libm::floorf, v);
+            }
+            let x = f64::from(i);
+            for v in [x, x.next_up(), x.next_down(), x + 0.5] {
+                check!(f64, libm::floor, v);
+            }
+        }
+        for v in [0.0, -0.0, 1e-45, -1e-45, 2_147_483_520.0, -2_147_483_648.0] {
+            check!(f32, libm::floorf, v);
+            check!(f64, libm::floor, f64::from(v));
+        }
     }
 
     #[test]

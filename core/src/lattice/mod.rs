@@ -360,7 +360,14 @@ pub(crate) fn sample_lattice_lanes<L: Lattice<D>, R: Real, const D: usize>(
     p: &[[R; LANES]; D],
     out: &mut [R; LANES],
 ) {
-    let (cell, f) = split_lanes(p);
+    const { assert!(D >= 1 && D <= 4, "lattice noises have 1 to 4 dimensions") };
+    // Written in place: returned by value from a helper, the two arrays were copied by a
+    // call to `memcpy` per chunk (bench/README.md, 2026-11-30 (night)).
+    let mut cell = [[0i32; LANES]; D];
+    let mut f = [[R::ZERO; LANES]; D];
+    for a in 0..D {
+        R::split_lanes(&p[a], &mut cell[a], &mut f[a]);
+    }
     let s = f.map(|fa| fa.map(L::Fade::fade));
     // Lanes along a row have their extreme cells at the ends: a row over more cells than a
     // column takes is recognised there, before the lanes are looked at.
@@ -633,20 +640,6 @@ fn window_lanes<L: Lattice<D>, R: Real, const D: usize>(
         let s = core::array::from_fn(|a| if a == 0 { *s } else { [along[a].2; LANES] });
         hashed_lanes(lattice, &cell, &f, &s)
     }
-}
-
-/// [`split_point`] over lanes: cells and fractions, axis by axis.
-#[inline]
-pub(crate) fn split_lanes<R: Real, const D: usize>(
-    p: &[[R; LANES]; D],
-) -> ([[i32; LANES]; D], [[R; LANES]; D]) {
-    const { assert!(D >= 1 && D <= 4, "lattice noises have 1 to 4 dimensions") };
-    let mut cell = [[0i32; LANES]; D];
-    let mut f = [[R::ZERO; LANES]; D];
-    for a in 0..D {
-        R::split_lanes(&p[a], &mut cell[a], &mut f[a]);
-    }
-    (cell, f)
 }
 
 /// Samples a lattice noise and its analytic gradient at `p`: the value is [`sample_lattice`]'s.
