@@ -989,15 +989,16 @@ fn fast_3d<R: Real, const G: bool>(seed: i64, t: [f64; 3], sum: &mut Sum<R, 3, G
 /// and per axis the side of the vertex the point lies on (`true`: toward `cell + 1`).
 #[inline(always)]
 fn nearest_3d<R: Real>(t: [f64; 3]) -> ([i64; 3], [R; 3], [bool; 3]) {
-    // Written out per axis, not a loop: the compiler kept a loop of three splits rolled, its
-    // state on the stack (8% more instructions per sample).
-    let split = [
-        round_split::<R>(t[0]),
-        round_split::<R>(t[1]),
-        round_split::<R>(t[2]),
-    ];
-    let d = split.map(|(_, f)| f);
-    (split.map(|(c, _)| i64::from(c)), d, d.map(|f| f >= R::ZERO))
+    let mut cell = [0i64; 3];
+    let mut d = [R::ZERO; 3];
+    let mut up = [true; 3];
+    for a in 0..3 {
+        let (c, f) = round_split::<R>(t[a]);
+        cell[a] = i64::from(c);
+        d[a] = f;
+        up[a] = f >= R::ZERO;
+    }
+    (cell, d, up)
 }
 
 /// [`fast_3d`]'s two vertices of one cubic lattice, with the offsets from them: the nearest
