@@ -288,11 +288,15 @@ open_simplex_common!(OpenSimplex2S);
 /// 0 first, so that one does not spread to the other axes.
 #[inline]
 fn turn<R: Real, const D: usize>(p: [R; D], improve: Improve, smooth: bool) -> [f64; D] {
+    // On the out-of-order targets, finite coordinates (nearly always) skip the zeroing: a
+    // branch the predictor follows, where masking each coordinate put three dependent
+    // operations on every sample's chain (`bench/README.md`: 2D points −8%). Elsewhere, and
+    // with the `small` feature (a second copy of the turn), and in the lane bodies, which
+    // vectorise it, each coordinate is masked ([`turn_masked`]).
+    if !super::OUT_OF_ORDER || cfg!(feature = "small") {
+        return turn_masked(p, improve, smooth);
+    }
     let p = p.map(|x| x.to_f64());
-    // Finite coordinates, nearly always, skip the zeroing: a branch the predictor follows,
-    // where masking each coordinate put three dependent operations on every sample's chain
-    // (`bench/README.md`: 2D points −8%). The lane bodies mask ([`turn_masked`]), which
-    // vectorises.
     if p.iter().all(|x| x.is_finite()) {
         turn_f64(p, improve, smooth)
     } else {
