@@ -225,29 +225,62 @@ fn skew<R: Real, const D: usize, const N: usize>(
         return;
     }
     let f = R::from_ratio(SKEW[D], 31);
+    // In passes over the lanes, each of one kind (integers, then floats, then per axis), so
+    // that a batch's 16 lanes vectorise (`bench/README.md`); a point's one lane is the same.
+    let mut whole = [0i32; N];
+    let mut part = [0i32; N];
     for l in 0..N {
-        let mut cells = 0i64;
+        (part[l], whole[l]) = skewed_cells::<D>(core::array::from_fn(|a| cell[a][l]), N == 1);
+    }
+    let mut shared = [R::ZERO; N];
+    for l in 0..N {
         let mut fractions = R::ZERO;
         for a in 0..D {
-            cells += i64::from(cell[a][l]);
             fractions = fractions + frac[a][l];
         }
-        // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
-        let product = cells * i64::from(SKEW[D]);
-        let part = R::from_ratio((product & 0x7FFF_FFFF) as i32, 31);
         // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every
         // axis, and each fraction plus its fraction is below 2 (compare-and-subtract steps,
         // cheaper than a general split).
-        let shared = part + fractions.mul_fraction(f);
-        let (up, shared) = step_down(shared);
-        let (up2, shared) = step_down(shared);
-        let whole = ((product >> 31) as i32).wrapping_add(up + up2);
-        for a in 0..D {
-            let (up, t) = step_down(frac[a][l] + shared);
-            cell[a][l] = cell[a][l].wrapping_add(whole).wrapping_add(up);
+        let s = R::from_ratio(part[l], 31) + fractions.mul_fraction(f);
+        let (up, s) = step_down(s);
+        let (up2, s) = step_down(s);
+        whole[l] = whole[l].wrapping_add(up + up2);
+        shared[l] = s;
+    }
+    for a in 0..D {
+        for l in 0..N {
+            let (up, t) = step_down(frac[a][l] + shared[l]);
+            cell[a][l] = cell[a][l].wrapping_add(whole[l]).wrapping_add(up);
             frac[a][l] = t;
         }
     }
+}
+
+/// `F·Σc` for one lane's cells `c`, in units of 2⁻³¹: the low 31 bits (its fraction) and the
+/// whole part modulo 2³². With `wide`, by one 64-bit product (a point); else from 32-bit
+/// pieces, which SSE2 multiplies two lanes at a time (`pmuludq`; a batch's 16 lanes): `Σc`
+/// is `lo + 2³²·hi` with `lo` its low 32 bits, so the product is `lo·F + 2³²·hi·F`, whose
+/// second term moves only bits from 32 up: the same bits either way.
+#[inline(always)]
+fn skewed_cells<const D: usize>(c: [i32; D], wide: bool) -> (i32, i32) {
+    let k = SKEW[D] as u32;
+    if wide {
+        let cells: i64 = c.iter().map(|&x| i64::from(x)).sum();
+        // |Σc| < 2³³ and F < 2³¹·0.37: the product fits i64.
+        let product = cells * i64::from(k);
+        return ((product & 0x7FFF_FFFF) as i32, (product >> 31) as i32);
+    }
+    let (mut lo, mut hi) = (0u32, 0i32);
+    for x in c {
+        let (sum, carry) = lo.overflowing_add(x as u32);
+        // x's sign extension is −1 or 0 above bit 31, plus the carry out of the low word.
+        hi = hi.wrapping_add(x >> 31).wrapping_add(i32::from(carry));
+        lo = sum;
+    }
+    let product = u64::from(lo) * u64::from(k);
+    // Bits 31–62 of the whole product: the low product's, plus 2·hi·F from the high word.
+    let whole = ((product >> 31) as u32).wrapping_add((hi as u32).wrapping_mul(k << 1));
+    ((product as u32 & 0x7FFF_FFFF) as i32, whole as i32)
 }
 
 /// [`Real::split`] of `N` coordinates; 16 lanes take the vectorised form (the same bits).
@@ -566,8 +599,56 @@ crate::noise::inherent_amplitude_bound!(Simplex, []);
 
 #[cfg(test)]
 mod tests {
-    use super::{LANES, PerlinGradients, SCALE, corners_kernel, point_kernel, simplex};
+    use super::{
+        LANES, PerlinGradients, SCALE, corners_kernel, point_kernel, simplex, skewed_cells,
+    };
     use crate::hash::prime::PrimeHash;
+
+    /// The batch's skew of the cells from 32-bit pieces is the point's 64-bit product, bit for
+    /// bit: cells at the ends of `i32` (sums past 2³¹ either way), around 0 and random, 2D–4D.
+    #[test]
+    fn skewed_cells_in_pieces_are_the_product() {
+        fn check<const D: usize>(c: [i32; D]) {
+            assert_eq!(
+                skewed_cells::<D>(c, false),
+                skewed_cells::<D>(c, true),
+                "{c:?}"
+            );
+        }
+        let edges = [
+            i32::MIN,
+            i32::MIN + 1,
+            -65_537,
+            -2,
+            -1,
+            0,
+            1,
+            2,
+            65_536,
+            i32::MAX - 1,
+            i32::MAX,
+        ];
+        let mut state = 0x2545_F491_4F6C_DD1Du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            state as i32
+        };
+        for &a in &edges {
+            for &b in &edges {
+                check([a, b]);
+                check([a, b, next()]);
+                check([b, a, a, b]);
+                check([a, next(), b, next()]);
+            }
+        }
+        for _ in 0..100_000 {
+            check([next(), next()]);
+            check([next(), next(), next()]);
+            check([next(), next(), next(), next()]);
+        }
+    }
 
     /// The target's corner kernel and point kernel (where there are) give the portable body's
     /// bits, over 16 lanes and at each of their points: random points near and far from the
