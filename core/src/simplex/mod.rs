@@ -235,8 +235,8 @@ fn skew<R: Real, const D: usize, const N: usize>(
     let mut shared = [R::ZERO; N];
     for l in 0..N {
         let mut fractions = R::ZERO;
-        for a in 0..D {
-            fractions = fractions + frac[a][l];
+        for axis in frac.iter() {
+            fractions = fractions + axis[l];
         }
         // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every
         // axis, and each fraction plus its fraction is below 2 (compare-and-subtract steps,
