@@ -128,6 +128,13 @@ where
     sample_lattice(perlin, p)
 }
 
+/// [`shared_kernel`] in 4D, its coordinates passed in registers.
+#[cold]
+#[inline(never)]
+fn shared_kernel4(perlin: &Perlin, x: f32, y: f32, z: f32, w: f32) -> f32 {
+    sample_lattice(perlin, [x, y, z, w])
+}
+
 impl Default for Perlin {
     fn default() -> Self {
         Self::new(0)
@@ -272,7 +279,11 @@ fn paired3(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z]: [f32; 3]) -> O
 /// The 4D point kernel, which has no table (a 4D pair table would be 32 KiB).
 #[inline]
 fn plain4(perlin: &Perlin, _: &arch::PerlinPairs, [x, y, z, w]: [f32; 4]) -> Option<f32> {
-    arch::perlin4(perlin.doubled(), x, y, z, w)
+    // With its own fallback, as `Perlin`'s 4D point sample (the reason is there).
+    Some(
+        arch::perlin4(perlin.doubled(), x, y, z, w)
+            .unwrap_or_else(|| shared_kernel4(perlin, x, y, z, w)),
+    )
 }
 
 forward_to_perlin!(1);
@@ -422,8 +433,15 @@ impl Lattice<4> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 4]) -> R {
+        // The fallback takes the coordinates one by one: with the array passed out of line
+        // (`shared_kernel`), it stayed in memory, and the vector kernel loaded its four lanes
+        // from the array's four separate stores, which the processor cannot forward to one
+        // load (a stall at the start of every sample; bench/README.md).
         sample_point(self, p, |[x, y, z, w]| {
-            arch::perlin4(self.doubled(), x, y, z, w)
+            Some(
+                arch::perlin4(self.doubled(), x, y, z, w)
+                    .unwrap_or_else(|| shared_kernel4(self, x, y, z, w)),
+            )
         })
     }
     #[inline]
