@@ -293,15 +293,13 @@ fn turn<R: Real, const D: usize>(p: [R; D], improve: Improve, smooth: bool) -> [
     // operations on every sample's chain (`bench/README.md`: 2D points −8%). Elsewhere, and
     // with the `small` feature (a second copy of the turn), and in the lane bodies, which
     // vectorise it, each coordinate is masked ([`turn_masked`]).
-    if !super::OUT_OF_ORDER || cfg!(feature = "small") {
-        return turn_masked(p, improve, smooth);
+    if super::OUT_OF_ORDER && !cfg!(feature = "small") {
+        let q = p.map(|x| x.to_f64());
+        if q.iter().all(|x| x.is_finite()) {
+            return turn_f64(q, improve, smooth);
+        }
     }
-    let p = p.map(|x| x.to_f64());
-    if p.iter().all(|x| x.is_finite()) {
-        turn_f64(p, improve, smooth)
-    } else {
-        turn_f64(p.map(f64::finite_or_zero), improve, smooth)
-    }
+    turn_masked(p, improve, smooth)
 }
 
 /// [`turn`] with every coordinate masked, no branch: for the lane bodies.
