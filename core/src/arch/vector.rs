@@ -56,6 +56,7 @@ pub(super) trait Lanes: Copy {
     fn low_pairs(self) -> Self;
     /// `[a₂, a₂, a₃, a₃]`.
     fn high_pairs(self) -> Self;
+
     /// Lane 0.
     fn first(self) -> f32;
     /// The transposition of four rows: lane `i` of result `j` is lane `j` of row `i`.
@@ -224,19 +225,23 @@ impl<G: GradientPairs> Kernel<'_, G> {
     /// The noise at `(x, y)`, or `None` outside the vector path's range.
     #[inline]
     fn sample2<V: Lanes>(&self, x: f32, y: f32) -> Option<f32> {
-        let (cell, f, s) = split_fade(V::from_array([x, y, 0.0, 0.0]), 0b11)?;
-        let [cx, cy, ..] = cell;
+        // Each coordinate in two lanes, `[x, x, y, y]` (one shuffle from two numbers), so that
+        // the offsets, and the fade each lerp takes, are one shuffle each or none: the kernel
+        // is bound by its vector operations (`bench/README.md`).
+        let (cell, f, s) = split_fade(V::from_array([x, x, y, y]), 0b1111)?;
+        let [cx, _, cy, _] = cell;
         // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
         // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
         // takes are the vector's halves.
         let (gx, gy) = self.gradients_xy::<V>(self.p(cx) + cy, self.p(cx + 1) + cy);
-        let u = f.interleave_low(f.sub(V::splat(1.0))); // fx, fx − 1, fy, fy − 1
-        let (dx, dy) = (u.low_pairs(), u.high_half());
+        let f1 = f.sub(V::splat(1.0));
+        // fx, fx, fx − 1, fx − 1 and fy, fy − 1, fy, fy − 1.
+        let (dx, dy) = (f.low_halves(f1), f.interleave_high(f1));
         // g_x·d_x + g_y·d_y, the shared kernel's order.
         let v = dx.mul(gx).add(dy.mul(gy));
-        // Along x, then y.
-        let r = lerp_halves(v, s.broadcast::<0>());
-        Some(finish(r, s.broadcast::<1>()))
+        // Along x (the fade of x in lanes 0 and 1), then y (in lane 2).
+        let r = lerp_halves(v, s);
+        Some(finish(r, s.high_half()))
     }
 
     /// The noise at `(x, y, z)`, or `None` outside the vector path's range.
