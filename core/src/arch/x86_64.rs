@@ -313,18 +313,17 @@ pub(crate) fn simplex_point<const D: usize>(
         sum += o;
     }
     let back = sum * k.unskew;
-    // Lane j is corner j: axis a is stepped there when rank + j ≥ D.
-    let corner = m128i::from([0, 1, 2, 3]);
+    // Lane j is corner j: axis a is stepped there when rank + j ≥ D, that is when
+    // rank > D − 1 − j (small numbers: no wrapping).
+    let last = D as i32 - 1;
+    let bound = m128i::from([last, last - 1, last - 2, last - 3]);
     let [d0, d1, d2, d3, _] = k.diagonal;
     let diagonal = m128::from_array([d0, d1, d2, d3]);
     let one = set_splat_m128(1.0);
     let mut q = zeroed_m128();
     let mut h = set_splat_i32_m128i(k.start as i32);
     let d: [m128; D] = core::array::from_fn(|a| {
-        let step = cmp_gt_mask_i32_m128i(
-            add_i32_m128i(set_splat_i32_m128i(rank[a]), corner),
-            set_splat_i32_m128i(D as i32 - 1),
-        );
+        let step = cmp_gt_mask_i32_m128i(set_splat_i32_m128i(rank[a]), bound);
         // x − 1 where stepped, else x − 0 = x exactly: the same bits as a select.
         let x = add_m128(set_splat_m128(offset[a] - back), diagonal);
         let x = sub_m128(x, bitand_m128(cast_to_m128_from_m128i(step), one));
