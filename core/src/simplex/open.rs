@@ -550,9 +550,19 @@ fn term_at<R: Real, const D: usize>(g: [R; D], d: [R; D], tau: R) -> R {
 #[inline(always)]
 fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
     let mut g = [R::ZERO; D];
+    // `f32` reads the tables already converted (without the `small` feature, which counts
+    // their 6.5 KiB): a conversion and a product fewer per vertex, the same numbers.
+    let converted = R::BINARY32 && !cfg!(feature = "small");
     match D {
         2 => {
             let i = ((h ^ (h >> 58)) >> 1) as u32 & 127;
+            if converted {
+                let row = &CYCLED2_F32[i as usize];
+                for a in 0..D {
+                    g[a] = R::from_f32(row[a]);
+                }
+                return g;
+            }
             let row = if cfg!(feature = "small") {
                 &GRAD2[(i % 24) as usize]
             } else {
@@ -563,6 +573,13 @@ fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
             }
         }
         3 => {
+            if converted {
+                let row = &CYCLED3_F32[index_3d(h) as usize];
+                for a in 0..D {
+                    g[a] = R::from_f32(row[a]);
+                }
+                return g;
+            }
             let row = row_3d(h);
             for a in 0..D {
                 g[a] = R::from_ratio(row[a], 29);
@@ -570,6 +587,13 @@ fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
         }
         _ => {
             let i = ((h ^ (h >> 57)) >> 2) as u32 & 511;
+            if converted {
+                let row = &GRAD4_F32[(i % 160) as usize];
+                for a in 0..D {
+                    g[a] = R::from_f32(row[a]);
+                }
+                return g;
+            }
             let row = &GRAD4[(i % 160) as usize];
             for a in 0..D {
                 g[a] = R::from_ratio(row[a], 29);
@@ -583,12 +607,18 @@ fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
 /// the rows of 16 lanes together).
 #[inline(always)]
 fn row_3d(h: i64) -> [i32; 3] {
-    let i = ((h ^ (h >> 58)) >> 2) as u32 & 255;
+    let i = index_3d(h);
     if cfg!(feature = "small") {
         GRAD3[(i % 48) as usize]
     } else {
         CYCLED3[i as usize]
     }
+}
+
+/// The index of [`CYCLED3`]'s row for the mixed hash `h`.
+#[inline(always)]
+fn index_3d(h: i64) -> u32 {
+    ((h ^ (h >> 58)) >> 2) as u32 & 255
 }
 
 /// The offset from the 2D skewed lattice vertex `cell + step` of a point whose unskewed offset
@@ -1533,6 +1563,27 @@ open_simplex_impls!(OpenSimplex2S, true, SMOOTH);
 static CYCLED2: [[i32; 2]; 128] = cycled(&GRAD2);
 static CYCLED3: [[i32; 3]; 256] = cycled(&GRAD3);
 
+/// [`CYCLED2`], [`CYCLED3`] and [`GRAD4`] as `f32` (each entry `f32::from_ratio(x, 29)`, the
+/// conversion rounded once and an exact product by 2⁻²⁹, as at run time).
+static CYCLED2_F32: [[f32; 2]; 128] = converted(&CYCLED2);
+static CYCLED3_F32: [[f32; 3]; 256] = converted(&CYCLED3);
+static GRAD4_F32: [[f32; 4]; 160] = converted(&GRAD4);
+
+/// A Q29 table's entries as `f32`.
+const fn converted<const D: usize, const N: usize>(t: &[[i32; D]; N]) -> [[f32; D]; N] {
+    let mut out = [[0.0; D]; N];
+    let mut i = 0;
+    while i < N {
+        let mut a = 0;
+        while a < D {
+            out[i][a] = t[i][a] as f32 * (1.0 / 536_870_912.0);
+            a += 1;
+        }
+        i += 1;
+    }
+    out
+}
+
 /// `set` repeated to `N` entries.
 const fn cycled<const D: usize, const M: usize, const N: usize>(
     set: &[[i32; D]; M],
@@ -1797,6 +1848,22 @@ static GRAD4: [[i32; 4]; 160] = [
 mod tests {
     use super::*;
     use crate::{I16F16, Noise};
+
+    /// The `f32` tables hold `f32::from_ratio` of every entry, bit for bit: the compile-time
+    /// conversion is the run-time one.
+    #[test]
+    fn converted_tables_are_the_run_time_conversion() {
+        fn check<const D: usize, const N: usize>(ints: &[[i32; D]; N], floats: &[[f32; D]; N]) {
+            for (row, converted) in ints.iter().zip(floats) {
+                for (&x, &f) in row.iter().zip(converted) {
+                    assert_eq!(f.to_bits(), f32::from_ratio(x, 29).to_bits(), "{x}");
+                }
+            }
+        }
+        check(&CYCLED2, &CYCLED2_F32);
+        check(&CYCLED3, &CYCLED3_F32);
+        check(&GRAD4, &GRAD4_F32);
+    }
 
     /// The lane bodies (`sample_lanes`, 2D and 3D, OpenSimplex2 and OpenSimplex2S) give
     /// `sample`'s bits at each lane, for every orientation, several seeds and every number
