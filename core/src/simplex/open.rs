@@ -505,7 +505,15 @@ fn share(a: usize, c: i64) -> i64 {
 #[inline(always)]
 fn hash_dot<R: Real, const D: usize>(key: i64, d: [R; D]) -> ([R; D], R) {
     let g = gradient::<R, D>(key.wrapping_mul(HASH_MULTIPLIER));
-    (g, dot_of(g, d))
+    // [`dot_of`] from the first term, not from 0 (one addition fewer; the lane bodies keep
+    // `dot_of`, whose form the compiler vectorises): `0 + t` is `t` but for a zero's sign,
+    // which changes no sum it enters but a zero one, and a sample's value and gradient are
+    // canonicalised.
+    let mut dot = d[0].mul_fraction(g[0]);
+    for a in 1..D {
+        dot = dot + d[a].mul_fraction(g[a]);
+    }
+    (g, dot)
 }
 
 /// `g·d` in axis order. |g| ≤ 3.4 and |d| < 2: the dot product stays below 30.
