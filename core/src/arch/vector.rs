@@ -56,7 +56,6 @@ pub(super) trait Lanes: Copy {
     fn low_pairs(self) -> Self;
     /// `[a₂, a₂, a₃, a₃]`.
     fn high_pairs(self) -> Self;
-
     /// Lane 0.
     fn first(self) -> f32;
     /// The transposition of four rows: lane `i` of result `j` is lane `j` of row `i`.
