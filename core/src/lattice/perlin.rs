@@ -111,28 +111,28 @@ where
 {
     if has_vector_kernel::<R>() {
         let f = p.map(R::to_f32);
-        return R::from_f32(kernel(f).unwrap_or_else(|| shared_kernel(perlin, f)));
+        let at = |a: usize| if a < D { f[a] } else { 0.0 };
+        return R::from_f32(
+            kernel(f).unwrap_or_else(|| shared_kernel::<D>(perlin, at(0), at(1), at(2), at(3))),
+        );
     }
     sample_lattice(perlin, p)
 }
 
 /// The shared kernel in `f32`, for the coordinates the vector kernel leaves to it (beyond ±2³¹,
 /// not finite, or a tiny negative whose fraction rounds to 1): out of line, so that the vector
-/// kernel stays small enough to inline.
+/// kernel stays small enough to inline. The first `D` of `x, y, z, w` are the point, passed
+/// one by one: passed as an array, the point stayed in memory, and the 4D vector kernel
+/// loaded its four lanes from the array's four separate stores, which the processor cannot
+/// forward to one load (a stall at the start of every sample; bench/README.md).
 #[cold]
 #[inline(never)]
-fn shared_kernel<const D: usize>(perlin: &Perlin, p: [f32; D]) -> f32
+fn shared_kernel<const D: usize>(perlin: &Perlin, x: f32, y: f32, z: f32, w: f32) -> f32
 where
     Perlin: Lattice<D>,
 {
-    sample_lattice(perlin, p)
-}
-
-/// [`shared_kernel`] in 4D, its coordinates passed in registers.
-#[cold]
-#[inline(never)]
-fn shared_kernel4(perlin: &Perlin, x: f32, y: f32, z: f32, w: f32) -> f32 {
-    sample_lattice(perlin, [x, y, z, w])
+    let all = [x, y, z, w];
+    sample_lattice(perlin, core::array::from_fn(|a| all[a]))
 }
 
 impl Default for Perlin {
@@ -279,11 +279,7 @@ fn paired3(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z]: [f32; 3]) -> O
 /// The 4D point kernel, which has no table (a 4D pair table would be 32 KiB).
 #[inline]
 fn plain4(perlin: &Perlin, _: &arch::PerlinPairs, [x, y, z, w]: [f32; 4]) -> Option<f32> {
-    // With its own fallback, as `Perlin`'s 4D point sample (the reason is there).
-    Some(
-        arch::perlin4(perlin.doubled(), x, y, z, w)
-            .unwrap_or_else(|| shared_kernel4(perlin, x, y, z, w)),
-    )
+    arch::perlin4(perlin.doubled(), x, y, z, w)
 }
 
 forward_to_perlin!(1);
@@ -433,15 +429,8 @@ impl Lattice<4> for Perlin {
     }
     #[inline]
     fn sample_point<R: Real>(&self, p: [R; 4]) -> R {
-        // The fallback takes the coordinates one by one: with the array passed out of line
-        // (`shared_kernel`), it stayed in memory, and the vector kernel loaded its four lanes
-        // from the array's four separate stores, which the processor cannot forward to one
-        // load (a stall at the start of every sample; bench/README.md).
         sample_point(self, p, |[x, y, z, w]| {
-            Some(
-                arch::perlin4(self.doubled(), x, y, z, w)
-                    .unwrap_or_else(|| shared_kernel4(self, x, y, z, w)),
-            )
+            arch::perlin4(self.doubled(), x, y, z, w)
         })
     }
     #[inline]
