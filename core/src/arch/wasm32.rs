@@ -8,7 +8,8 @@
 use core::arch::wasm32::{
     f32x4, f32x4_abs, f32x4_add, f32x4_convert_i32x4, f32x4_extract_lane, f32x4_ge, f32x4_gt,
     f32x4_lt, f32x4_mul, f32x4_splat, f32x4_sqrt, f32x4_sub, i32x4_add, i32x4_bitmask,
-    i32x4_extract_lane, i32x4_shuffle, i32x4_trunc_sat_f32x4, v128, v128_and, v128_not, v128_or,
+    i32x4_extract_lane, i32x4_shuffle, i32x4_trunc_sat_f32x4, u64x2, v128, v128_and, v128_not,
+    v128_or,
 };
 
 use super::vector::Lanes;
@@ -23,6 +24,10 @@ impl Lanes for v128 {
     #[inline]
     fn from_array([a, b, c, d]: [f32; 4]) -> Self {
         f32x4(a, b, c, d)
+    }
+    #[inline]
+    fn from_halves(lo: &f64, hi: &f64) -> Self {
+        u64x2(lo.to_bits(), hi.to_bits())
     }
     #[inline]
     fn load(row: &[f32; 4]) -> Self {

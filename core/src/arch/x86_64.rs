@@ -5,10 +5,11 @@
 
 use safe_arch::{
     add_i32_m128i, add_m128, bitand_m128, bitand_m128i, bitandnot_m128, bitor_m128, bitor_m128i,
-    bitxor_m128, bitxor_m128i, cast_to_m128_from_m128i, cast_to_m128i_from_m128,
-    cmp_eq_mask_i32_m128i, cmp_eq_mask_m128, cmp_ge_mask_m128, cmp_gt_mask_i32_m128i,
-    cmp_gt_mask_m128, cmp_lt_mask_i32_m128i, cmp_nlt_mask_m128, convert_to_m128_from_i32_m128i,
-    extract_i16_as_i32_m128i, get_f32_from_m128_s, get_i32_from_m128i_s, load_unaligned_m128, m128,
+    bitxor_m128, bitxor_m128i, cast_to_m128_from_m128d, cast_to_m128_from_m128i,
+    cast_to_m128i_from_m128, cmp_eq_mask_i32_m128i, cmp_eq_mask_m128, cmp_ge_mask_m128,
+    cmp_gt_mask_i32_m128i, cmp_gt_mask_m128, cmp_lt_mask_i32_m128i, cmp_nlt_mask_m128,
+    convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
+    get_i32_from_m128i_s, load_f64_m128d_s, load_replace_high_m128d, load_unaligned_m128, m128,
     m128i, max_m128, min_m128, move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128,
     mul_widen_u32_odd_m128i, set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i,
     shr_imm_i32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i, shuffle_abi_f32_all_m128,
@@ -29,6 +30,11 @@ impl Lanes for m128 {
     #[inline]
     fn from_array(a: [f32; 4]) -> Self {
         m128::from_array(a)
+    }
+    #[inline]
+    fn from_halves(lo: &f64, hi: &f64) -> Self {
+        // `movsd`, then `movhpd` from memory.
+        cast_to_m128_from_m128d(load_replace_high_m128d(load_f64_m128d_s(lo), hi))
     }
     #[inline]
     fn load(row: &[f32; 4]) -> Self {
