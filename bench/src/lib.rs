@@ -112,6 +112,40 @@ pub const IMPLEMENTATIONS: [&str; 6] = [
 /// A workload: fills `rows` rows of the grid into `out` (`rows · N` values).
 pub type Run = Box<dyn Fn(usize, &mut [f32])>;
 
+/// The workload a runner binary's command line names, `FUNCTION IMPLEMENTATION [ROWS]
+/// [LAYOUT]` (`rows` when `ROWS` is left out; `LAYOUT` one of the names of [`LAYOUTS`], `layout`
+/// when left out): the workload and its row count (at least 1, at most [`N`]), or the message
+/// to print.
+///
+/// # Errors
+///
+/// A message saying what is wrong, starting with the usage line `usage`.
+pub fn command_line(
+    usage: &str,
+    args: &[String],
+    rows: Option<usize>,
+    layout_name: &str,
+) -> Result<(Run, usize), String> {
+    let (Some(function), Some(implementation)) = (args.get(1), args.get(2)) else {
+        return Err(usage.into());
+    };
+    let rows = match (args.get(3), rows) {
+        (Some(r), _) => r
+            .parse::<usize>()
+            .map_err(|_| format!("{usage}: ROWS must be a number"))?,
+        (None, Some(rows)) => rows,
+        (None, None) => return Err(usage.into()),
+    };
+    let name = args.get(4).map_or(layout_name, String::as_str);
+    let Some(layout) = layout(name) else {
+        let names: Vec<&str> = LAYOUTS.iter().map(|l| l.name).collect();
+        return Err(format!("{usage}: LAYOUT is one of {names:?}"));
+    };
+    let run = workload(function, implementation, layout)
+        .ok_or_else(|| format!("no workload {function} for {implementation}"))?;
+    Ok((run, rows.clamp(1, N)))
+}
+
 /// Whether a benchmark binary measures and prints its tables: `cargo bench` passes `--bench`.
 /// Run by `cargo test` (no `--bench`, as criterion decides its test mode), or with `--test` or
 /// `--list`, each workload runs once and nothing is timed (CI's "run once").

@@ -557,56 +557,53 @@ fn term_at<R: Real, const D: usize>(g: [R; D], d: [R; D], tau: R) -> R {
 /// reference's table of the dimension's set cycled to 128 (2D), 256 (3D) or 512 (4D) entries.
 #[inline(always)]
 fn gradient<R: Real, const D: usize>(h: i64) -> [R; D] {
-    let mut g = [R::ZERO; D];
     // `f32` reads the tables already converted (without the `small` feature, which counts
     // their 6.5 KiB): a conversion and a product fewer per vertex, the same numbers.
     let converted = R::BINARY32 && !cfg!(feature = "small");
     match D {
         2 => {
-            let i = ((h ^ (h >> 58)) >> 1) as u32 & 127;
+            let i = ((h ^ (h >> 58)) >> 1) as usize & 127;
             if converted {
-                let row = &CYCLED2_F32[i as usize];
-                for a in 0..D {
-                    g[a] = R::from_f32(row[a]);
-                }
-                return g;
+                return f32_row(&CYCLED2_F32[i]);
             }
-            let row = if cfg!(feature = "small") {
-                &GRAD2[(i % 24) as usize]
+            q29_row(if cfg!(feature = "small") {
+                &GRAD2[i % 24]
             } else {
-                &CYCLED2[i as usize]
-            };
-            for a in 0..D {
-                g[a] = R::from_ratio(row[a], 29);
-            }
+                &CYCLED2[i]
+            })
         }
         3 => {
             if converted {
-                let row = &CYCLED3_F32[index_3d(h) as usize];
-                for a in 0..D {
-                    g[a] = R::from_f32(row[a]);
-                }
-                return g;
+                return f32_row(&CYCLED3_F32[index_3d(h) as usize]);
             }
-            let row = row_3d(h);
-            for a in 0..D {
-                g[a] = R::from_ratio(row[a], 29);
-            }
+            q29_row(&row_3d(h))
         }
         _ => {
-            let i = ((h ^ (h >> 57)) >> 2) as u32 & 511;
+            let i = (((h ^ (h >> 57)) >> 2) as usize & 511) % 160;
             if converted {
-                let row = &GRAD4_F32[(i % 160) as usize];
-                for a in 0..D {
-                    g[a] = R::from_f32(row[a]);
-                }
-                return g;
+                return f32_row(&GRAD4_F32[i]);
             }
-            let row = &GRAD4[(i % 160) as usize];
-            for a in 0..D {
-                g[a] = R::from_ratio(row[a], 29);
-            }
+            q29_row(&GRAD4[i])
         }
+    }
+}
+
+/// The first `D` numbers of a row of `f32`, as `R`.
+#[inline(always)]
+fn f32_row<R: Real, const D: usize>(row: &[f32]) -> [R; D] {
+    let mut g = [R::ZERO; D];
+    for a in 0..D {
+        g[a] = R::from_f32(row[a]);
+    }
+    g
+}
+
+/// The first `D` numbers of a row in units of 2⁻²⁹, as `R`.
+#[inline(always)]
+fn q29_row<R: Real, const D: usize>(row: &[i32]) -> [R; D] {
+    let mut g = [R::ZERO; D];
+    for a in 0..D {
+        g[a] = R::from_ratio(row[a], 29);
     }
     g
 }
