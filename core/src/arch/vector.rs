@@ -7,14 +7,13 @@
 //!
 //! A sample is bound by latency: Perlin's hash is a chain of dependent lookups (`p[p[x] + y]`,
 //! then a gradient), and every lerp waits for the one before; and by the number of its
-//! operations, which decides how many samples the processor overlaps (`bench/README.md`). In
-//! 2D the x and y components of each corner's gradient are one 8-byte row of a table indexed
-//! by the hash byte itself ([`XY_ROWS`]), two of them loaded into one vector. In 3D the
-//! gradients of two neighbouring hash values come from one row of a static table
-//! ([`PAIR_ROWS`]), already split by axis, so the vectors need no transposition. In 4D (32
-//! gradients, a pair table would be 32 KiB) each corner's gradient is one row of a table
-//! indexed by the hash byte ([`GRAD4_ROWS`]), and four rows are transposed into the vectors
-//! of their components.
+//! operations on the ports vector and integer arithmetic share (`bench/README.md`). The
+//! gradient components come from static tables indexed by the hash byte itself, two
+//! components of a corner in one 8-byte entry, so that two corners' entries load into one
+//! vector with no index arithmetic: x and y in 2D ([`XY_ROWS`]), x and y, then z and w in 4D
+//! ([`PAIRS_OF_4`]); one shuffle more per pair of vectors splits them by axis. In 3D the
+//! gradients of two neighbouring hash values come from one row of a table indexed by both
+//! hashes' low nibbles ([`PAIR_ROWS`]), already split by axis.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
@@ -65,8 +64,6 @@ pub(super) trait Lanes: Copy {
     fn high_pairs(self) -> Self;
     /// Lane 0.
     fn first(self) -> f32;
-    /// The transposition of four rows: lane `i` of result `j` is lane `j` of row `i`.
-    fn transpose(rows: [Self; 4]) -> [Self; 4];
     /// [`Real::split`](crate::Real::split) of the lanes `axes` selects (a bit per lane): the
     /// cells reduced mod 256 and the fractions. `None` leaves the point to the shared kernel: a
     /// coordinate outside `(−2^31, 2^31)` or not finite, or a negative one so small that its
@@ -146,7 +143,7 @@ impl GradientPairs for PairRows {
     }
 
     /// The gradients of `p[i]` and `p[i + 1]` from [`XY_ROWS`], one row each: no row index to
-    /// compute, so the sample is shorter by its operations (2D: 3% faster, `bench/README.md`).
+    /// compute (8 integer operations fewer per 2D sample, 7% of its time, `bench/README.md`).
     /// 3D keeps the pair's row, which also has the z components.
     #[inline]
     fn xy<V: Lanes>(&self, p: &[u8; 512], i: usize) -> V {
@@ -157,19 +154,23 @@ impl GradientPairs for PairRows {
     }
 }
 
-/// The gradient Perlin's 4D `grad` selects for each hash `h < 256` (`Grad4`'s row `h & 31`):
-/// no mask to apply before the load. 4 KiB.
+/// Two components of the gradient Perlin's 4D `grad` selects for each hash `h < 256`
+/// (`Grad4`'s row `h & 31`), as the bits of two `f32`, the first in the low word: x and y in
+/// entry `h`, z and w in entry `256 + h` (one table, so that both are read at the hash byte
+/// scaled by 8 with no shift). 4 KiB.
 #[repr(align(64))]
-struct Grad4Rows([[f32; 4]; 256]);
+struct PairsOf4([f64; 512]);
 
-static GRAD4_ROWS: Grad4Rows = {
-    let mut rows = [[0.0f32; 4]; 256];
-    let mut h = 0;
-    while h < 256 {
-        rows[h] = Grad4::<f32>::TABLE[h & 31];
-        h += 1;
+static PAIRS_OF_4: PairsOf4 = {
+    let mut rows = [0.0f64; 512];
+    let mut i = 0;
+    while i < 512 {
+        let g = Grad4::<f32>::TABLE[i & 31];
+        let first = if i < 256 { 0 } else { 2 };
+        rows[i] = packed(g[first], g[first + 1]);
+        i += 1;
     }
-    Grad4Rows(rows)
+    PairsOf4(rows)
 };
 
 /// The x and y components of the gradient Perlin's `grad` selects for each hash `h < 256`
@@ -183,13 +184,18 @@ static XY_ROWS: XyRows = {
     let mut h = 0;
     while h < 256 {
         let g = GRAD3[h & 15];
-        let (x, y) = ((g[0] as f32).to_bits(), (g[1] as f32).to_bits());
-        // Never a NaN (y's bits are those of −1, 0 or 1); only its bits are ever read.
-        rows[h] = f64::from_bits((y as u64) << 32 | x as u64);
+        rows[h] = packed(g[0] as f32, g[1] as f32);
         h += 1;
     }
     XyRows(rows)
 };
+
+/// The bits of `a` and `b` as one `f64`, `a` in the low word, as [`Lanes::from_halves`] reads
+/// them. Never a NaN for the gradients' components (`b`'s bits are those of −1, 0 or 1), and
+/// only the bits are ever read.
+const fn packed(a: f32, b: f32) -> f64 {
+    f64::from_bits((b.to_bits() as u64) << 32 | a.to_bits() as u64)
+}
 
 /// A seed's table, `PAIR_ROWS` composed with the permutation: entry `b` (`b < 512`, an index of
 /// the doubled permutation `p`) is the row of `p[b]` and `p[b + 1]`. One lookup replaces two
@@ -362,7 +368,14 @@ impl<G: GradientPairs> Kernel<'_, G> {
     /// zero, which [`finish`] canonicalises).
     #[inline]
     fn dots4<V: Lanes>(&self, i: [usize; 4], dx: V, dy: V, dz: V, dw: V) -> V {
-        let [gx, gy, gz, gw] = V::transpose(i.map(|i| V::load(&GRAD4_ROWS.0[self.p(i)])));
+        let [h0, h1, h2, h3] = i.map(|i| self.p(i));
+        let half = |at: usize, a: usize, b: usize| {
+            V::from_halves(&PAIRS_OF_4.0[at + a], &PAIRS_OF_4.0[at + b])
+        };
+        let (xy01, xy23) = (half(0, h0, h1), half(0, h2, h3));
+        let (zw01, zw23) = (half(256, h0, h1), half(256, h2, h3));
+        let (gx, gy) = (xy01.evens(xy23), xy01.odds(xy23));
+        let (gz, gw) = (zw01.evens(zw23), zw01.odds(zw23));
         dx.mul(gx).add(dy.mul(gy)).add(dz.mul(gz)).add(dw.mul(gw))
     }
 

@@ -96,17 +96,6 @@ impl Lanes for v128 {
         f32x4_extract_lane::<0>(self)
     }
     #[inline]
-    fn transpose([a, b, c, d]: [Self; 4]) -> [Self; 4] {
-        let (ab_low, cd_low) = (a.interleave_low(b), c.interleave_low(d));
-        let (ab_high, cd_high) = (a.interleave_high(b), c.interleave_high(d));
-        [
-            ab_low.low_halves(cd_low),
-            i32x4_shuffle::<2, 3, 6, 7>(ab_low, cd_low),
-            ab_high.low_halves(cd_high),
-            i32x4_shuffle::<2, 3, 6, 7>(ab_high, cd_high),
-        ]
-    }
-    #[inline]
     fn split(self, axes: u32) -> Option<([usize; 4], Self)> {
         // floor: truncate, then one down where truncation rounded up (negative non-integers).
         let t = i32x4_trunc_sat_f32x4(self);

@@ -13,9 +13,8 @@ use safe_arch::{
     m128i, max_m128, min_m128, move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128,
     mul_widen_u32_odd_m128i, set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i,
     shr_imm_i32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i, shuffle_abi_f32_all_m128,
-    shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128, transpose_four_m128,
-    truncate_m128_to_m128i, unpack_high_m128, unpack_low_i32_m128i, unpack_low_m128, zeroed_m128,
-    zeroed_m128i,
+    shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128, truncate_m128_to_m128i,
+    unpack_high_m128, unpack_low_i32_m128i, unpack_low_m128, zeroed_m128, zeroed_m128i,
 };
 
 use super::vector::Lanes;
@@ -100,11 +99,6 @@ impl Lanes for m128 {
     #[inline]
     fn first(self) -> f32 {
         get_f32_from_m128_s(self)
-    }
-    #[inline]
-    fn transpose([mut a, mut b, mut c, mut d]: [Self; 4]) -> [Self; 4] {
-        transpose_four_m128(&mut a, &mut b, &mut c, &mut d);
-        [a, b, c, d]
     }
     #[inline]
     fn split(self, axes: u32) -> Option<([usize; 4], Self)> {
