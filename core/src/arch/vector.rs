@@ -31,8 +31,8 @@ use super::selected::F32x4;
 pub(super) trait Lanes: Copy {
     /// The vector of four values.
     fn from_array(a: [f32; 4]) -> Self;
-    /// The two pairs of `f32` whose bits `lo` and `hi` hold, each the low word first (see
-    /// [`XyRows`]): one 8-byte load and one load into the high half.
+    /// The two pairs of `f32` whose bits `lo` and `hi` hold, each the low word first (as
+    /// [`packed`] stores them): one 8-byte load and one load into the high half.
     fn from_halves(lo: &f64, hi: &f64) -> Self;
     /// A row of a table.
     fn load(row: &[f32; 4]) -> Self;
