@@ -243,11 +243,16 @@ fn skew<R: Real, const D: usize, const N: usize>(
         }
         // Σf < D and F·D < 1.3: `shared` is below 2.3; its whole part is common to every
         // axis, and each fraction plus its fraction is below 2 (compare-and-subtract steps,
-        // cheaper than a general split).
+        // cheaper than a general split). In 2D the cells' part rounds to at most 1 and
+        // F·Σf < 2F < 0.74, so `shared` is below 2 and one step is its floor (the second
+        // would subtract 0 from every point, on the chain a sample waits for).
         let s = R::from_ratio(part[l], 31) + fractions.mul_fraction(f);
-        let (up, s) = step_down(s);
-        let (up2, s) = step_down(s);
-        whole[l] = whole[l].wrapping_add(up + up2);
+        let (mut up, mut s) = step_down(s);
+        if D > 2 {
+            let (up2, rest) = step_down(s);
+            (up, s) = (up + up2, rest);
+        }
+        whole[l] = whole[l].wrapping_add(up);
         shared[l] = s;
     }
     for a in 0..D {
@@ -603,9 +608,29 @@ crate::noise::inherent_amplitude_bound!(Simplex, []);
 #[cfg(test)]
 mod tests {
     use super::{
-        LANES, PerlinGradients, SCALE, corners_kernel, point_kernel, simplex, skewed_cells,
+        LANES, PerlinGradients, SCALE, SKEW, corners_kernel, point_kernel, simplex, skewed_cells,
     };
     use crate::hash::prime::PrimeHash;
+    use crate::real::sealed::Sealed;
+    use crate::{I16F16, Real};
+
+    /// The 2D skew takes one step of the floor of its shared part (`skew`): even the largest
+    /// cells' part and the largest fractions put it below 2, in every number type (a second
+    /// step would find nothing to subtract).
+    #[test]
+    fn shared_skew_2d_is_below_two() {
+        /// `skew`'s shared part for the largest part of the cells and `D` fractions `f`.
+        fn largest<R: Real, const D: usize>(f: R) -> R {
+            let sum = (1..D).fold(f, |sum, _| sum + f);
+            R::from_ratio(0x7FFF_FFFF, 31) + sum.mul_fraction(R::from_ratio(SKEW[D], 31))
+        }
+        let two = |x: f64| x < 2.0;
+        assert!(two(f64::from(largest::<f32, 2>(1.0 - f32::EPSILON / 2.0))));
+        assert!(two(largest::<f64, 2>(1.0 - f64::EPSILON / 2.0)));
+        assert!(two(largest::<I16F16, 2>(I16F16::from_bits(0xFFFF)).to_num()));
+        // Not in 3D (the part rounds to 1 in f32, and F·Σf to just below 1): 3D keeps both.
+        assert!(!two(f64::from(largest::<f32, 3>(1.0 - f32::EPSILON / 2.0))));
+    }
 
     /// The batch's skew of the cells from 32-bit pieces is the point's 64-bit product, bit for
     /// bit: cells at the ends of `i32` (sums past 2³¹ either way), around 0 and random, 2D–4D.
