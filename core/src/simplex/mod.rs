@@ -611,7 +611,6 @@ mod tests {
         LANES, PerlinGradients, SCALE, SKEW, corners_kernel, point_kernel, simplex, skewed_cells,
     };
     use crate::hash::prime::PrimeHash;
-    use crate::real::sealed::Sealed;
     use crate::{I16F16, Real};
 
     /// The 2D skew takes one step of the floor of its shared part (`skew`): even the largest
