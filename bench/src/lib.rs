@@ -112,10 +112,10 @@ pub const IMPLEMENTATIONS: [&str; 6] = [
 /// A workload: fills `rows` rows of the grid into `out` (`rows · N` values).
 pub type Run = Box<dyn Fn(usize, &mut [f32])>;
 
-/// The workload a runner binary's command line names, `FUNCTION IMPLEMENTATION [ROWS]
-/// [LAYOUT]` (`rows` when `ROWS` is left out; `LAYOUT` one of the names of [`LAYOUTS`], `layout`
-/// when left out): the workload and its row count (at least 1, at most [`N`]), or the message
-/// to print.
+/// The workload a runner binary's command line `args` names, `FUNCTION IMPLEMENTATION [ROWS]
+/// [LAYOUT]` (`ROWS` required unless `rows` gives its default; `LAYOUT` one of the names of
+/// [`LAYOUTS`], `layout_name` when left out): the workload and its row count (at least 1, at
+/// most [`N`]).
 ///
 /// # Errors
 ///
