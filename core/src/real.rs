@@ -667,12 +667,15 @@ macro_rules! impl_real_float {
                 if self.abs() < LIMIT {
                     let r = (self + MAGIC) - MAGIC;
                     let floor = r - if r > self { 1.0 } else { 0.0 };
-                    let frac = self - floor;
+                    // `(self + 0) − floor` is `(self − floor) + 0`, the fraction with `−0`
+                    // made `+0` (`self − floor` is `−0` only for `self = −0`), but its `+ 0`
+                    // runs beside the chain to the floor rather than after it.
+                    let frac = (self + 0.0) - floor;
                     let cell = (floor + MAGIC).to_bits().wrapping_sub(MAGIC.to_bits()) as i32;
                     if frac >= 1.0 {
                         (cell.wrapping_add(1), 0.0)
                     } else {
-                        (cell, frac + 0.0)
+                        (cell, frac)
                     }
                 } else {
                     far(self)
