@@ -10,8 +10,8 @@
 //! operations on the ports vector and integer arithmetic share (`bench/README.md`). The
 //! gradient components come from static tables indexed by the hash byte itself, two
 //! components of a corner in one 8-byte entry, so that two corners' entries load into one
-//! vector with no index arithmetic: x and y in 2D ([`XY_ROWS`]), x and y, then z and w in 4D
-//! ([`PAIRS_OF_4`]); one shuffle more per pair of vectors splits them by axis. In 3D the
+//! vector with no index arithmetic ([`HALVES`]: x and y in 2D, x and y, then z and w in 4D);
+//! one shuffle more per pair of vectors splits them by axis. In 3D the
 //! gradients of two neighbouring hash values come from one row of a table indexed by both
 //! hashes' low nibbles ([`PAIR_ROWS`]), already split by axis.
 //!
@@ -142,52 +142,42 @@ impl GradientPairs for PairRows {
         &self.0[row]
     }
 
-    /// The gradients of `p[i]` and `p[i + 1]` from [`XY_ROWS`], one row each: no row index to
+    /// The gradients of `p[i]` and `p[i + 1]` from [`HALVES`], one entry each: no row index to
     /// compute (8 integer operations fewer per 2D sample, 7% of its time, `bench/README.md`).
     /// 3D keeps the pair's row, which also has the z components.
     #[inline]
     fn xy<V: Lanes>(&self, p: &[u8; 512], i: usize) -> V {
-        V::from_halves(
-            &XY_ROWS.0[usize::from(p[i])],
-            &XY_ROWS.0[usize::from(p[i + 1])],
-        )
+        let [a, b] = [p[i], p[i + 1]].map(|h| &HALVES.0[XY + usize::from(h)]);
+        V::from_halves(a, b)
     }
 }
 
-/// Two components of the gradient Perlin's 4D `grad` selects for each hash `h < 256`
-/// (`Grad4`'s row `h & 31`), as the bits of two `f32`, the first in the low word: x and y in
-/// entry `h`, z and w in entry `256 + h` (one table, so that both are read at the hash byte
-/// scaled by 8 with no shift). 4 KiB.
+/// Two components of the gradient Perlin's `grad` selects for each hash `h < 256`, as the
+/// bits of two `f32`, the first in the low word ([`packed`]), in three sections of 256:
+/// x and y in 2D and 3D (`GRAD3[h & 15]`) at [`XY`], then x and y at [`XY4`] and z and w at
+/// [`ZW4`] in 4D (`Grad4`'s row `h & 31`). One table, so that every read is at the hash byte
+/// scaled by 8 plus a constant, with no shift. 6 KiB.
 #[repr(align(64))]
-struct PairsOf4([f64; 512]);
+struct Halves([f64; 768]);
 
-static PAIRS_OF_4: PairsOf4 = {
-    let mut rows = [0.0f64; 512];
+/// Where [`HALVES`]' sections start.
+const XY: usize = 0;
+const XY4: usize = 256;
+const ZW4: usize = 512;
+
+static HALVES: Halves = {
+    let mut rows = [0.0f64; 768];
     let mut i = 0;
-    while i < 512 {
-        let g = Grad4::<f32>::TABLE[i & 31];
-        let first = if i < 256 { 0 } else { 2 };
-        rows[i] = packed(g[first], g[first + 1]);
+    while i < 768 {
+        let (g3, g4) = (GRAD3[i & 15], Grad4::<f32>::TABLE[i & 31]);
+        rows[i] = match i / 256 {
+            0 => packed(g3[0] as f32, g3[1] as f32),
+            1 => packed(g4[0], g4[1]),
+            _ => packed(g4[2], g4[3]),
+        };
         i += 1;
     }
-    PairsOf4(rows)
-};
-
-/// The x and y components of the gradient Perlin's `grad` selects for each hash `h < 256`
-/// (`GRAD3[h & 15]`), as the bits of two `f32`, x in the low word: one 8-byte load per
-/// gradient ([`Lanes::from_halves`]). 2 KiB.
-#[repr(align(64))]
-struct XyRows([f64; 256]);
-
-static XY_ROWS: XyRows = {
-    let mut rows = [0.0f64; 256];
-    let mut h = 0;
-    while h < 256 {
-        let g = GRAD3[h & 15];
-        rows[h] = packed(g[0] as f32, g[1] as f32);
-        h += 1;
-    }
-    XyRows(rows)
+    Halves(rows)
 };
 
 /// The bits of `a` and `b` as one `f64`, `a` in the low word, as [`Lanes::from_halves`] reads
@@ -369,11 +359,10 @@ impl<G: GradientPairs> Kernel<'_, G> {
     #[inline]
     fn dots4<V: Lanes>(&self, i: [usize; 4], dx: V, dy: V, dz: V, dw: V) -> V {
         let [h0, h1, h2, h3] = i.map(|i| self.p(i));
-        let half = |at: usize, a: usize, b: usize| {
-            V::from_halves(&PAIRS_OF_4.0[at + a], &PAIRS_OF_4.0[at + b])
-        };
-        let (xy01, xy23) = (half(0, h0, h1), half(0, h2, h3));
-        let (zw01, zw23) = (half(256, h0, h1), half(256, h2, h3));
+        let half =
+            |at: usize, a: usize, b: usize| V::from_halves(&HALVES.0[at + a], &HALVES.0[at + b]);
+        let (xy01, xy23) = (half(XY4, h0, h1), half(XY4, h2, h3));
+        let (zw01, zw23) = (half(ZW4, h0, h1), half(ZW4, h2, h3));
         let (gx, gy) = (xy01.evens(xy23), xy01.odds(xy23));
         let (gz, gw) = (zw01.evens(zw23), zw01.odds(zw23));
         dx.mul(gx).add(dy.mul(gy)).add(dz.mul(gz)).add(dw.mul(gw))
