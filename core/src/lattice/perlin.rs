@@ -413,7 +413,20 @@ impl Lattice<3> for Perlin {
     fn point_kernel_for_scattered_lanes<R: Real>() -> bool {
         has_vector_kernel::<R>()
     }
-    gradient_corners!(3, mul_unit);
+    type Corner<R: Real> = [R; 3];
+    #[inline]
+    fn corner<R: Real>(&self, h: u32) -> [R; 3] {
+        self.gradient(h)
+    }
+    /// `d·g` as `d_x·g_x + (d_y·g_y + d_z·g_z)`. Each of Perlin's gradients has a zero
+    /// component, whose product is a zero, so this is the axis-order sum
+    /// `(d_x·g_x + d_y·g_y) + d_z·g_z` but for the sign of a zero (canonicalised by sampling;
+    /// in fixed point both are exact). Along a grid row the corner, `d_y` and `d_z` are fixed,
+    /// so the bracket is one number per corner and row, and each point adds once, not twice.
+    #[inline]
+    fn contribution<R: Real>(&self, g: &[R; 3], d: &[R; 3]) -> R {
+        d[0].mul_unit(g[0]) + (d[1].mul_unit(g[1]) + d[2].mul_unit(g[2]))
+    }
     #[inline]
     fn gradient<R: Real>(&self, h: u32) -> [R; 3] {
         Grad3::<R>::TABLE[(h & 15) as usize]
