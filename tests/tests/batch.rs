@@ -84,9 +84,10 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
 
     // Grids: a row that is not a multiple of LANES, a row shorter than LANES, a far origin, and
     // rows of several blocks of chunks, with steps that put a chunk's lanes in many cells, in
-    // up to 3 (below 2/15 of a cell) and, finer than 1/16, in one or two; and rows aligned with
-    // the cells (origin on the lattice along axis 0, a step of 1/16 or 1/32: every chunk in one
-    // cell), which take the chunk loop rather than runs.
+    // up to 3 (below 2/15 of a cell) and, finer than 1/16, in one or two (and, over 400
+    // columns, runs of a cell cut by a block's end, which the next block then starts with);
+    // and rows aligned with the cells (origin on the lattice along axis 0, a step of 1/16 or
+    // 1/32: every chunk in one cell), which take the chunk loop rather than runs.
     for (size0, far, max_step, aligned) in [
         (37, false, 0.7, None),
         (5, false, 0.7, None),
@@ -94,6 +95,7 @@ fn check<R: Real, const D: usize, N: Noise<R, D>>(name: &str, noise: &N, rng: &m
         (150, false, 0.7, None),
         (150, false, 0.13, None),
         (150, false, 0.06, None),
+        (400, false, 0.09, None),
         (300, false, 0.3, Some(1.0 / 16.0)),
         (150, false, 0.3, Some(-1.0 / 32.0)),
     ] {

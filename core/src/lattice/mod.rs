@@ -409,7 +409,8 @@ struct ChunkAxis0<R> {
 /// fade along axis 0 serve every row; the other axes, constant along a row, are split and faded
 /// once per row and block ([`row_axes`]). A block whose chunks each lie in one cell (a grid of
 /// 16 or more samples per cell, aligned with the cells) is taken chunk by chunk, each chunk's
-/// corners hashed once per row; any other block goes to [`runs_of_block`]. The values are
+/// corners hashed once per row; any other block goes to [`runs_of_block`], and the next block
+/// starts where it stopped (at a cell's first column). The values are
 /// those of [`sample_lattice_lanes`] (the same operations on the same numbers).
 pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
     lattice: &L,
@@ -422,7 +423,8 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
         return Ok(());
     }
     let rows = out.len() / width;
-    for block in (0..width).step_by(LANES * CHUNKS_PER_BLOCK) {
+    let mut block = 0;
+    while block < width {
         let chunks = (width - block).div_ceil(LANES).min(CHUNKS_PER_BLOCK);
         let mut x = [ChunkAxis0 {
             cell: [0; LANES],
@@ -441,8 +443,9 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
         if !aligned {
             // Chunks that straddle cells: runs of columns aligned with the cells instead
             // (their own split of the block, once per block: the chunk loop below is faster
-            // over these per-chunk arrays than over the runs' padded ones).
-            runs_of_block(lattice, grid, block, out);
+            // over these per-chunk arrays than over the runs' padded ones). The next block
+            // starts where the runs stopped, at a cell's first column.
+            block += runs_of_block(lattice, grid, block, out);
             continue;
         }
         for row in 0..rows {
@@ -464,6 +467,7 @@ pub(crate) fn fill_grid_lattice<L: Lattice<D>, R: Real, const D: usize>(
                 }
             }
         }
+        block += BLOCK;
     }
     Ok(())
 }
@@ -506,18 +510,19 @@ const BLOCK: usize = LANES * CHUNKS_PER_BLOCK;
 /// off the lattice): the block is cut into runs of columns in one cell, each sampled as 16
 /// lanes from its first column (the corners hashed once per row; the lanes past the run
 /// computed and dropped), and, where cells change faster than [`MIN_RUN`] columns, windows of
-/// 16 columns ([`window_lanes`]). Out of line, so that its code does not change how the
-/// compiler lays out the aligned blocks' loop.
+/// 16 columns ([`window_lanes`]). A cell that goes on past the block's end is left to the next
+/// block, which starts with it: returns the columns done (at least 1). Out of line, so that
+/// its code does not change how the compiler lays out the aligned blocks' loop.
 #[inline(never)]
 fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
     lattice: &L,
     grid: &Grid<R, D>,
     block: usize,
     out: &mut [R],
-) {
+) -> usize {
     let width = grid.size[0];
     let Some(columns) = width.checked_sub(block).map(|c| c.min(BLOCK)) else {
-        return;
+        return BLOCK;
     };
     let rows = out.len().checked_div(width).unwrap_or(0);
     // One chunk of padding, so that a run starting anywhere in the block reads 16 lanes.
@@ -545,6 +550,8 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
     }; BLOCK];
     let mut count = 0;
     let mut i = 0;
+    // The columns this block takes: all, or up to the cut run.
+    let mut done = columns;
     while i < columns {
         let Some(window) = lanes_at(&cell, i) else {
             break;
@@ -565,6 +572,18 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
             }
         };
         i += run.len as usize;
+        // A run cut by the block's end whose cell goes on is left to the next block, which
+        // then starts with the cell (a run cut in two would cost two runs' lanes); unless
+        // it is the block's only run.
+        let cut = run.one_cell
+            && i == columns
+            && block + columns < width
+            && run.start > 0
+            && cell.get(i) == cell.get(run.start as usize);
+        if cut {
+            done = run.start as usize;
+            break;
+        }
         if let Some(r) = runs.get_mut(count) {
             *r = run;
             count += 1;
@@ -602,6 +621,7 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
             }
         }
     }
+    done
 }
 
 /// The [`LANES`] values of `v` from index `at`, as an array.
