@@ -147,8 +147,9 @@ impl Default for Perlin {
 /// On x86-64 (and in WebAssembly with `simd128`), 2D and 3D point sampling in `f32` look up the gradients of two neighbouring
 /// corners in one 16 KiB table (the gradients that Perlin's `grad` picks for `p[b]` and
 /// `p[b + 1]`, for every `b`), one dependent lookup fewer than [`Perlin`], whose kernel first
-/// reads `p[b]` and `p[b + 1]` and then static gradient rows. That makes a 3D point sample
-/// about 10% faster and a 2D one about 3% (`bench/README.md`). Other number types,
+/// reads `p[b]` and `p[b + 1]` and then static gradient rows. How much that saves depends on
+/// the core: on a recent Intel core a 3D point sample about 10% and a 2D one about 3%, on an
+/// AMD Zen 4 about 2% and 10% (`bench/README.md`). Other number types,
 /// dimensions and targets sample exactly as [`Perlin`]; there the table is empty.
 ///
 /// * **Size**: 16.5 KiB where the vector kernel is (x86-64, WebAssembly with `simd128`), 512
