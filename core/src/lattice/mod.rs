@@ -572,10 +572,12 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
             }
         };
         i += run.len as usize;
-        // A run cut by the block's end whose cell goes on is left to the next block, which
-        // then starts with the cell (a run cut in two would cost two runs' lanes); unless
-        // it is the block's only run.
+        // A run cut short by the block's end whose cell goes on is left to the next block,
+        // which then starts with the cell (a run cut in two would cost two runs' lanes);
+        // unless it is the block's only run. (A whole run of 16 columns costs the same
+        // either way.)
         let cut = run.one_cell
+            && (run.len as usize) < LANES
             && i == columns
             && block + columns < width
             && run.start > 0
