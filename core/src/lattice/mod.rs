@@ -510,9 +510,10 @@ const BLOCK: usize = LANES * CHUNKS_PER_BLOCK;
 /// off the lattice): the block is cut into runs of columns in one cell, each sampled as 16
 /// lanes from its first column (the corners hashed once per row; the lanes past the run
 /// computed and dropped), and, where cells change faster than [`MIN_RUN`] columns, windows of
-/// 16 columns ([`window_lanes`]). A cell that goes on past the block's end is left to the next
-/// block, which starts with it: returns the columns done (at least 1). Out of line, so that
-/// its code does not change how the compiler lays out the aligned blocks' loop.
+/// 16 columns ([`window_lanes`]). A run that the block's end cuts short and whose cell goes on
+/// is left to the next block, which starts with it: returns the columns done (at least 1).
+/// Out of line, so that its code does not change how the compiler lays out the aligned
+/// blocks' loop.
 #[inline(never)]
 fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
     lattice: &L,
