@@ -551,7 +551,7 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
     }; BLOCK];
     let mut count = 0;
     let mut i = 0;
-    // The columns this block takes: all, or up to the cut run.
+    // The columns this block takes: all, or up to the cell it leaves to the next.
     let mut done = columns;
     while i < columns {
         let Some(window) = lanes_at(&cell, i) else {
@@ -559,6 +559,14 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
         };
         let left = columns - i;
         let lead = window.iter().take_while(|&&c| c == window[0]).count();
+        // The cell goes on past the block's end (its lead, counted up to 16, is longer than
+        // what is left): it is left to the next block, which then starts with it (a cell cut
+        // in two would cost two runs' lanes), unless nothing in the block comes before it or
+        // the row ends here.
+        if lead > left && i > 0 && block + columns < width {
+            done = i;
+            break;
+        }
         let run = if lead >= MIN_RUN.min(left) {
             Run {
                 start: i as u8,
@@ -573,20 +581,6 @@ fn runs_of_block<L: Lattice<D>, R: Real, const D: usize>(
             }
         };
         i += run.len as usize;
-        // A run cut short by the block's end whose cell goes on is left to the next block,
-        // which then starts with the cell (a run cut in two would cost two runs' lanes);
-        // unless it is the block's only run. (A whole run of 16 columns costs the same
-        // either way.)
-        let cut = run.one_cell
-            && (run.len as usize) < LANES
-            && i == columns
-            && block + columns < width
-            && run.start > 0
-            && cell.get(i) == cell.get(run.start as usize);
-        if cut {
-            done = run.start as usize;
-            break;
-        }
         if let Some(r) = runs.get_mut(count) {
             *r = run;
             count += 1;
