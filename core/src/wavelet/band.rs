@@ -677,8 +677,7 @@ impl<'t, T> Wavelet<'t, T> {
         for (s, side) in sides.iter_mut().enumerate() {
             for (a, axis) in side.iter_mut().enumerate() {
                 if crossing >> a & 1 == 1 {
-                    // The local index in block s, plus n: local0 + j − n·s + n.
-                    blend_axis(axis, local0[a][0] + n - s * n, n, h);
+                    blend_axis(axis, s, zone_at(local0[a][0], n, h));
                 }
             }
         }
@@ -750,22 +749,50 @@ fn blended_placement<const D: usize>(
     }
 }
 
+/// The blend weights of the coefficients around a zone, in units of 2⁻¹⁶: `ZONE[0][z + 2]`
+/// is the weight, in the block the zone leaves, of the coefficient `z` places past the zone's
+/// start (`z` in `[−2, 2·BLEND + 2)`: 1 before the zone, the falling ramp, 0 past it), and
+/// `ZONE[1][z + 2]` its weight in the block the zone leads into (0, the rising ramp, 1):
+/// [`blend_weight`]'s values at those places (a unit test compares them), read without its
+/// four-way branch. Padded to 16 entries, so that an index masked to 4 bits is in range.
+const ZONE: [[i32; 16]; 2] = {
+    let mut zone = [[0; 16]; 2];
+    let mut i = 0;
+    while i < 2 * BLEND + 4 {
+        let z = i as isize - 2;
+        (zone[0][i], zone[1][i]) = if z < 0 {
+            (1 << 16, 0)
+        } else if z < 2 * BLEND as isize {
+            (RAMP[2 * BLEND - 1 - z as usize], RAMP[z as usize])
+        } else {
+            (0, 1 << 16)
+        };
+        i += 1;
+    }
+    zone
+};
+
 /// Multiplies the weights of the three coefficients of one axis (every lane's) by their blend
-/// weights in a block, the first at local index `l_plus_n − n` ([`blend_weight`]). Out of
-/// line, as it runs only in blend zones.
-#[inline(never)]
-fn blend_axis<R: Real, const L: usize>(
-    axis: &mut [[R; L]; 3],
-    l_plus_n: usize,
-    n: usize,
-    h: usize,
-) {
+/// weights in the block on `side` of a zone (0: the block it leaves, 1: the one it leads
+/// into), the first coefficient `at − 2` places past the zone's start ([`ZONE`]; `at` in
+/// `[0, 2·BLEND + 2)`). The same products as [`blend_weight`]'s weights give, 1 and 0
+/// included.
+#[inline]
+fn blend_axis<R: Real, const L: usize>(axis: &mut [[R; L]; 3], side: usize, at: usize) {
     for (j, wj) in axis.iter_mut().enumerate() {
-        let b: R = blend_weight(l_plus_n + j, n, h);
+        let b = R::from_ratio(ZONE[side & 1][(at + j) & 15], 16);
         for x in wj.iter_mut() {
             *x = x.mul_fraction(b);
         }
     }
+}
+
+/// `at` of [`blend_axis`] for a crossing axis whose first coefficient has local index `l0` in
+/// the first block ([`axis_span`]: `l0` in `[n − h − 2, n + h)`, the zone starting at `n −
+/// h`), with `h` > 0.
+#[inline]
+fn zone_at(l0: usize, n: usize, h: usize) -> usize {
+    (l0 + h + 2).wrapping_sub(n)
 }
 
 /// Sets to 0 the weight of each coefficient outside its block's reach: `sides[s][a][j]` is
@@ -992,5 +1019,43 @@ impl<R: Real, T: TileData<D>, const D: usize> Noise<R, D> for Wavelet<'_, T> {
     /// Plus 2⁻¹⁰ for rounding, as for the lattice noises.
     fn amplitude_bound(&self) -> f32 {
         self.coefficient_bound::<D>() * (1.0 + 1e-6) + crate::lattice::ROUNDING
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{BLEND, ZONE, blend_axis, blend_weight, zone_at};
+    use crate::{I16F16, Real};
+
+    /// The zone table gives [`blend_weight`]'s weights at every place a crossing axis's
+    /// coefficients can take, in both blocks, for several tile sizes and number types.
+    fn zone_is_blend_weight<R: Real + core::fmt::Debug>() {
+        let h = BLEND;
+        for n in [11, 16, 32, 64] {
+            for l0 in n - h - 2..n + h {
+                for side in 0..2 {
+                    let mut axis = [[R::from_f32(0.75)]; 3];
+                    blend_axis(&mut axis, side, zone_at(l0, n, h));
+                    for (j, [w]) in axis.into_iter().enumerate() {
+                        let b: R = blend_weight(l0 + j + n - side * n, n, h);
+                        assert_eq!(
+                            w,
+                            R::from_f32(0.75).mul_fraction(b),
+                            "n {n} l0 {l0} side {side}"
+                        );
+                    }
+                }
+            }
+        }
+        // Both ends of each side's table are the weights of a whole block and of none.
+        assert_eq!((ZONE[0][0], ZONE[0][2 * BLEND + 3]), (1 << 16, 0));
+        assert_eq!((ZONE[1][0], ZONE[1][2 * BLEND + 3]), (0, 1 << 16));
+    }
+
+    #[test]
+    fn zone_table_is_blend_weight() {
+        zone_is_blend_weight::<f32>();
+        zone_is_blend_weight::<f64>();
+        zone_is_blend_weight::<I16F16>();
     }
 }

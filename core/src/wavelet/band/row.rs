@@ -28,7 +28,7 @@
 
 use super::{
     AxisMap, TileData, Wavelet, axis_span, blend_axis, blend_weight, bspline3, bspline3_lanes,
-    exclude, members,
+    exclude, members, zone_at,
 };
 use crate::Real;
 use crate::batch::LANES;
@@ -513,7 +513,7 @@ impl<T> Wavelet<'_, T> {
             if two {
                 if h > 0 {
                     for (s, [side]) in axis.iter_mut().enumerate() {
-                        blend_axis(side, l0 + n - s * n, n, h);
+                        blend_axis(side, s, zone_at(l0, n, h));
                     }
                 }
                 exclude(&mut axis, members(1, [l0], n, h));
