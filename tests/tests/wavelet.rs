@@ -414,6 +414,12 @@ fn bad_input_gives_documented_results() {
             if n[0].is_finite() && n[0].abs() > 1.0 {
                 assert_eq!(unit_normal(n)[0], s.signum(), "{n:?}");
                 assert_eq!(v, band.sample_projected(p, unit_normal(n)), "{n:?}");
+            } else if n[0] != 0.0 && n[0].is_finite() {
+                // A subnormal tilt keeps its direction: an oblique normal, summed coefficient
+                // by coefficient, within rounding of the block sums along z.
+                assert_eq!(unit_normal(n)[0], n[0], "{n:?}");
+                let z: f32 = band.sample_projected(p, [0.0, 0.0, 1.0]);
+                assert!((v - z).abs() <= 1e-5, "{n:?}: {v} against {z} along z");
             } else {
                 let z = [0.0, 0.0, 1.0];
                 assert_eq!(v, band.sample_projected(p, z), "{n:?} projects along z");

@@ -11,18 +11,22 @@
 //!
 //! **Cost.** The basis is non-zero on a parallelepiped of volume 54 coefficients (27 over the
 //! determinant ½ of `I − n nᵀ/2`) inside a bounding box of up to 8³. A sample
-//! (`Wavelet::projected_fast`) visits only the coefficients that can be non-zero (along an
-//! axis, the 3 × 3 × 6 product of per-axis supports; along an oblique normal, each row of the
-//! box clipped to the support) and reads them through a `Window`, which resolves each axis and
-//! each tile block once per sample instead of once per coefficient. The tests hold it to a
+//! (`Wavelet::projected_fast`) visits only the coefficients that can be non-zero. Along an
+//! axis the basis is a product of per-axis B-splines over the 3 × 3 × 6 product of per-axis
+//! supports, and a blended coefficient a sum over blocks of per-axis blend weights, so the
+//! sample is summed block by block, each block's reads weighted separably, as a plain band is
+//! (`Wavelet::projected_axis`). Along an oblique normal, each row of the box is clipped to the
+//! support and each coefficient read through a `Window`, which resolves each axis and each
+//! tile block once per sample instead of once per coefficient. The tests hold both to a
 //! reference that visits the whole box and finds each coefficient on its own (`compact.rs`):
-//! the same values, bit for bit.
+//! the same values, bit for bit, along oblique normals, and within rounding (the sums' order
+//! differs) along an axis.
 
 use crate::{ProjectedNoise, Real};
 
 use core::ops::Range;
 
-use super::band::{TileData, Wavelet};
+use super::band::{TileData, Wavelet, blend_weight, first_block};
 use super::window::{WIDTH, Window};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
@@ -245,6 +249,126 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     }
 }
 
+impl<T: TileData<3>> Wavelet<'_, T> {
+    /// [`projected_fast`](Self::projected_fast)'s sums along an axis-aligned normal, block by
+    /// block: the basis is a product of per-axis B-splines `Π_a B(t_a)`, and a blended
+    /// coefficient is the sum, over the blocks that reach it, of the block's tile read times
+    /// per-axis blend weights, so the window's sum is, block by block, a separable sum of the
+    /// block's reads weighted along each axis by `B(t_a)` times the block's blend weight: a
+    /// plain band's block sum (`band.rs`) over 3 × 3 × 6 coefficients instead of a blended
+    /// coefficient found for each of the 54. Rounded in that order (z outermost, then y, x
+    /// innermost; the blocks' sums added in slot order), not the reference's coefficient by
+    /// coefficient: within rounding of it (`fast_path_is_the_compact_path`). The gradient's
+    /// `G_a` are the same sums with axis `a`'s B-splines replaced by their derivatives.
+    ///
+    /// `t` holds each axis's basis arguments from global coefficient `first`, `support` the
+    /// offsets where they lie in `(0, 3)`. The value and, with `GRADIENT`, `G_x`, `G_y`, `G_z`
+    /// (otherwise zeros); `None` where some axis's support reaches more than two blocks (tiles
+    /// narrower than the support and the blend zones, or an index that wraps around `i32`):
+    /// the caller then finds each coefficient through a `Window`. Out of line, one copy per
+    /// number type (the demo's module has a size budget; a call per sample costs nothing
+    /// against its thousands of instructions).
+    #[inline(never)]
+    fn projected_axis<R: Real, const GRADIENT: bool>(
+        &self,
+        first: [i32; 3],
+        t: &[[R; WIDTH]; 3],
+        support: &[Range<usize>; 3],
+    ) -> Option<[R; 4]> {
+        let (n, h) = (T::SIZE, self.half_width::<3>());
+        // Per slot (the block of an axis's first coefficient in reach, or the next) and axis:
+        // the B-splines times the slot's blend weights, their derivatives times them, each
+        // coefficient's local index in the slot's block (plus n), and the offsets the block
+        // reaches (consecutive: the first block reaches a prefix, the next one a suffix).
+        let mut w = [[[R::ZERO; WIDTH]; 3]; 2];
+        let mut dw = [[[R::ZERO; WIDTH]; 3]; 2];
+        let mut local = [[[0usize; WIDTH]; 3]; 2];
+        let mut reach = [[0..0, 0..0, 0..0], [0..0, 0..0, 0..0]];
+        let mut base = [0i32; 3];
+        for a in 0..3 {
+            let mut ends = [(WIDTH, 0); 2];
+            for k in support[a].clone() {
+                let k = k % WIDTH;
+                let (block, l_plus_n, zone) = first_block(first[a].wrapping_add(k as i32), n, h);
+                if k == support[a].start {
+                    base[a] = block;
+                }
+                let slot = block.wrapping_sub(base[a]) as u32 as usize;
+                if slot + usize::from(zone) > 1 {
+                    return None;
+                }
+                let b = bspline(t[a][k]);
+                // Its first block reaches it, with weight 1 or, in a zone, its blend weight;
+                // in a zone, the next block reaches it too.
+                for m in 0..=usize::from(zone) {
+                    let (s, l) = (slot + m, l_plus_n - m * n);
+                    let omega = if zone { blend_weight(l, n, h) } else { R::ONE };
+                    w[s][a][k] = b.mul_rn(omega);
+                    if GRADIENT {
+                        dw[s][a][k] = bspline_derivative(t[a][k]).mul_rn(omega);
+                    }
+                    local[s][a][k] = l;
+                    ends[s] = (ends[s].0.min(k), k + 1);
+                }
+            }
+            for (s, &(lo, hi)) in ends.iter().enumerate() {
+                reach[s][a] = lo..hi.max(lo);
+            }
+        }
+        let tile = self.tile();
+        let unit = tile.unit::<R>();
+        // The value, then G_x, G_y, G_z.
+        let mut sums = [R::ZERO; 4];
+        for block in 0..8 {
+            let slot = |a: usize| block >> a & 1;
+            let reach: [Range<usize>; 3] = core::array::from_fn(|a| reach[slot(a)][a].clone());
+            if reach.iter().any(|r| r.is_empty()) {
+                continue;
+            }
+            let place = self.placement(core::array::from_fn(|a| {
+                base[a].wrapping_add(slot(a) as i32)
+            }));
+            // Each reached offset's part of the tile's flat index in this block.
+            let mut parts = [[0usize; WIDTH]; 3];
+            for (a, part) in parts.iter_mut().enumerate() {
+                let axis = place.axis(a, n);
+                for k in reach[a].clone() {
+                    part[k % WIDTH] = axis.offset(local[slot(a)][a][k % WIDTH], n);
+                }
+            }
+            // The reached offsets' parts and weights, as slices (no index masks in the loops).
+            let [px, py, pz] =
+                core::array::from_fn(|a| parts[a].get(reach[a].clone()).unwrap_or(&[]));
+            for (set, sum) in sums
+                .iter_mut()
+                .enumerate()
+                .take(if GRADIENT { 4 } else { 1 })
+            {
+                let [wx, wy, wz] = core::array::from_fn(|a| {
+                    let w = if set == a + 1 { &dw } else { &w };
+                    w[slot(a)][a].get(reach[a].clone()).unwrap_or(&[])
+                });
+                let mut block_sum = R::ZERO;
+                for (&oz, &wz) in pz.iter().zip(wz) {
+                    let mut plane = R::ZERO;
+                    for (&oy, &wy) in py.iter().zip(wy) {
+                        let row = oy + oz;
+                        let mut line = R::ZERO;
+                        for (&ox, &wx) in px.iter().zip(wx) {
+                            let c = tile.flat_with(ox + row, unit);
+                            line = line.saturating_add(wx.mul_rn(c));
+                        }
+                        plane = plane.saturating_add(wy.mul_rn(line));
+                    }
+                    block_sum = block_sum.saturating_add(wz.mul_rn(plane));
+                }
+                *sum = sum.saturating_add(block_sum);
+            }
+        }
+        Some(sums)
+    }
+}
+
 /// The offsets `kmin..=kmax` from the cell, along one axis, of the coefficients the projected
 /// basis can reach from fraction `frac` along a unit normal with component `na`: those within
 /// `3|n_a| + 3√((1 − n_a²)/2)` (rounded up a little for safety) of the point.
@@ -364,14 +488,11 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
             }
         }
-        let mut window = Window::new(self, first, count);
-        let mut sums = Sums::<R, GRADIENT>::default();
         if nrm.iter().filter(|&&x| x == R::ZERO).count() == 2 {
             let mut t = [[R::ZERO; WIDTH]; 3];
             let mut support = [0..0, 0..0, 0..0];
             for a in 0..3 {
-                // t rises with the offset, so the offsets with t in (0, 3) are consecutive
-                // (each is still tested, as the reference tests it).
+                // t rises with the offset, so the offsets with t in (0, 3) are consecutive.
                 let (mut lo, mut hi) = (count[a], 0);
                 for j in 0..count[a] {
                     let j = j % WIDTH;
@@ -383,34 +504,32 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
                 support[a] = lo..hi.max(lo);
             }
-            let b = t.map(|t| t.map(bspline));
-            for jz in support[2].clone() {
-                for jy in support[1].clone() {
-                    for jx in support[0].clone() {
-                        let k = [jx, jy, jz].map(|j| j % WIDTH);
-                        let t = [t[0][k[0]], t[1][k[1]], t[2][k[2]]];
-                        let b = [b[0][k[0]], b[1][k[1]], b[2][k[2]]];
-                        if let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) {
-                            sums.add(weight, t, b, window.coefficient(k));
-                        }
-                    }
-                }
+            if let Some(sums) = self.projected_axis::<R, GRADIENT>(first, &t, &support) {
+                let sums = Sums::<R, GRADIENT> {
+                    value: sums[0],
+                    partial: [sums[1], sums[2], sums[3]],
+                };
+                return sums.finish(nrm);
             }
-        } else {
-            let oblique = Oblique::new(nrm, count[0]);
-            for jz in 0..count[2] {
-                for jy in 0..count[1] {
-                    let t_at = |jx: usize| -> [R; 3] {
-                        let k = [jx, jy, jz].map(|j| j % WIDTH);
-                        let dot = along[0][k[0]] + along[1][k[1]] + along[2][k[2]];
-                        core::array::from_fn(|a| centre[a][k[a]] + nrm[a].mul_rn(dot).mul_rn(half))
-                    };
-                    for jx in oblique.range(t_at(0)) {
-                        let t = t_at(jx);
-                        let b = t.map(bspline);
-                        if let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) {
-                            sums.add(weight, t, b, window.coefficient([jx, jy, jz]));
-                        }
+        }
+        // Coefficient by coefficient: oblique normals, and the axis-aligned windows whose
+        // blocks `projected_axis` does not take (along an axis the rows' `t` are the same
+        // numbers: the other components' terms of `n·d` are zeros).
+        let mut sums = Sums::<R, GRADIENT>::default();
+        let mut window = Window::new(self, first, count);
+        let oblique = Oblique::new(nrm, count[0]);
+        for jz in 0..count[2] {
+            for jy in 0..count[1] {
+                let t_at = |jx: usize| -> [R; 3] {
+                    let k = [jx, jy, jz].map(|j| j % WIDTH);
+                    let dot = along[0][k[0]] + along[1][k[1]] + along[2][k[2]];
+                    core::array::from_fn(|a| centre[a][k[a]] + nrm[a].mul_rn(dot).mul_rn(half))
+                };
+                for jx in oblique.range(t_at(0)) {
+                    let t = t_at(jx);
+                    let b = t.map(bspline);
+                    if let Some(weight) = Sums::<R, GRADIENT>::weight(&t, &b) {
+                        sums.add(weight, t, b, window.coefficient([jx, jy, jz]));
                     }
                 }
             }
@@ -547,27 +666,47 @@ mod tests {
                         let scale = [2.0, 40.0, 3e5][i % 3];
                         let p = [0; 3].map(|_| rng.uniform(-scale, scale));
                         let unit = unit_normal(*n);
+                        // Along an axis, a window whose blocks are cached sums block by block
+                        // (`projected_axis`): within rounding of the reference, measured at
+                        // most 1.8e-7 (f32), 1.3e-16 (f64) of the bound and 23 units of
+                        // I16F16's last place (where it is closer to f64 than the reference:
+                        // 1.0–1.7e-4 against 2.2–2.5e-4); elsewhere the same bits.
+                        let axis = unit.iter().filter(|&&x| x == 0.0).count() == 2;
+                        let bound = f64::from(band.projected_bound());
+                        let near = |a: f64, b: f64, tolerance: f64| {
+                            if axis {
+                                (a - b).abs() <= tolerance * bound
+                            } else {
+                                a.to_bits() == b.to_bits()
+                            }
+                        };
+                        let near32 = |a: f32, b: f32| near(f64::from(a), f64::from(b), 1e-6);
                         let fast = band.projected_fast::<f32, true>(p, unit);
                         let compact = band.projected_compact::<f32, true>(p, unit);
-                        assert_eq!(
-                            fast.0.to_bits(),
-                            compact.0.to_bits(),
-                            "{p:?} {n:?} {tiling:?}"
-                        );
-                        assert_eq!(fast.1.map(f32::to_bits), compact.1.map(f32::to_bits));
+                        assert!(near32(fast.0, compact.0), "{p:?} {n:?} {tiling:?}");
+                        for a in 0..3 {
+                            assert!(near32(fast.1[a], compact.1[a]), "{p:?} {n:?} {tiling:?}");
+                        }
                         let value = band.projected_fast::<f32, false>(p, unit).0;
-                        assert_eq!(value.to_bits(), compact.0.to_bits());
+                        assert_eq!(value.to_bits(), fast.0.to_bits());
                         let pq = p.map(|x| I16F16::from_num(x.clamp(-30000.0, 30000.0)));
                         let uq = unit_normal(n.map(I16F16::from_num));
                         let fast = band.projected_fast::<I16F16, true>(pq, uq);
-                        assert_eq!(fast, band.projected_compact::<I16F16, true>(pq, uq));
+                        let compact = band.projected_compact::<I16F16, true>(pq, uq);
+                        let ulps = |a: I16F16, b: I16F16| (a - b).to_bits().unsigned_abs();
+                        let worst = (0..3).fold(ulps(fast.0, compact.0), |m, a| {
+                            m.max(ulps(fast.1[a], compact.1[a]))
+                        });
+                        // (A normal's tiny component can round to 0 in fixed point only.)
+                        let axis_q = uq.iter().filter(|&&x| x == I16F16::ZERO).count() == 2;
+                        assert!(worst <= if axis_q { 64 } else { 0 }, "{p:?} {n:?} {worst}");
                         let value = band.projected_fast::<I16F16, false>(pq, uq).0;
                         assert_eq!(value, fast.0);
                         let pd = p.map(f64::from);
                         let ud = unit_normal(n.map(f64::from));
                         let fast = band.projected_fast::<f64, false>(pd, ud).0;
                         let compact = band.projected_compact::<f64, false>(pd, ud).0;
-                        assert_eq!(fast.to_bits(), compact.to_bits());
+                        assert!(near(fast, compact, 1e-14), "{p:?} {n:?} {tiling:?}");
                         checked += 1;
                     }
                 }
