@@ -742,6 +742,30 @@ mod tests {
         assert_eq!(checked, 5 * 3 * 2 * 30 * 40);
     }
 
+    /// Along an axis, the default tile's windows are summed block by block (so the test
+    /// above compares the block sums with the reference), and a tile of 4 reaches three
+    /// blocks along an axis, which the block sums refuse (the test above compares the
+    /// coefficient-by-coefficient path with the reference there).
+    #[test]
+    fn axis_windows_are_summed_block_by_block() {
+        let support = [1..4, 1..4, 0..6];
+        let t = [[1.0f32; WIDTH]; 3];
+        // Six offsets along z from a coefficient at 3 mod 4 reach three blocks of 4.
+        for first in [[-3, -2, 3], [0, 5, 7], [-40, 7, 1003]] {
+            let band = Wavelet::new(0, &crate::wavelet::TILE3);
+            assert!(
+                band.projected_axis::<f32, false>(first, &t, &support)
+                    .is_some()
+            );
+            let small = Wavelet::new(5, &TILE4).with_tiling(Tiling::Varied);
+            assert!(
+                small
+                    .projected_axis::<f32, false>(first, &t, &support)
+                    .is_none()
+            );
+        }
+    }
+
     /// Tiles of 4 and 6 with varied tiling reach 3 blocks along an axis: each keeps its own
     /// placement (a cache of 3 slots from the wrong base once read two blocks as one, which
     /// the fast path, resolving each block on its own there, exposed).
