@@ -301,7 +301,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 // Its first block reaches it, with weight 1 or, in a zone, its blend weight;
                 // in a zone, the next block reaches it too.
                 for m in 0..=usize::from(zone) {
-                    let (s, l) = (slot + m, l_plus_n - m * n);
+                    // slot + m ≤ 1 (checked above); the mask shows the indexing in range.
+                    let (s, l) = ((slot + m) & 1, l_plus_n - m * n);
                     let omega = if zone { blend_weight(l, n, h) } else { R::ONE };
                     w[s][a][k] = b.mul_rn(omega);
                     if GRADIENT {
