@@ -732,9 +732,13 @@ impl<'t, T> Wavelet<'t, T> {
 
 /// [`Tiling::Blended`]'s placement of `block`: a [`CellHash`] of the block picks the
 /// orientation (its top 10 bits) and, mixed once more, a shift along each axis (10 bits each,
-/// scaled to `0..n`). Out of line: it is off the default tiling's path, and its code would
-/// otherwise be copied into every block loop.
-#[inline(never)]
+/// scaled to `0..n`). Inline on x86-64 and AArch64 (a 2D band's point sample takes 10% fewer
+/// instructions on x86-64, 3D 7%); out of line elsewhere: in wasm for the demo's size budget,
+/// and on the firmware cores, where the copies in every block loop moved the instruction
+/// counts of the other noises sampled in the same program (Perlin 2D on the Cortex-M4F 134 →
+/// 140) for 1–3% on the blended band.
+#[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
+#[cfg_attr(not(any(target_arch = "x86_64", target_arch = "aarch64")), inline(never))]
 fn blended_placement<const D: usize>(
     hash: &CellHash,
     block: [i32; D],
