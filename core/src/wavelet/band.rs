@@ -738,7 +738,10 @@ impl<'t, T> Wavelet<'t, T> {
 /// counts of the other noises sampled in the same program (Perlin 2D on the Cortex-M4F 134 →
 /// 140) for 1–3% on the blended band.
 #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
-#[cfg_attr(not(any(target_arch = "x86_64", target_arch = "aarch64")), inline(never))]
+#[cfg_attr(
+    not(any(target_arch = "x86_64", target_arch = "aarch64")),
+    inline(never)
+)]
 fn blended_placement<const D: usize>(
     hash: &CellHash,
     block: [i32; D],
