@@ -732,11 +732,10 @@ impl<'t, T> Wavelet<'t, T> {
 
 /// [`Tiling::Blended`]'s placement of `block`: a [`CellHash`] of the block picks the
 /// orientation (its top 10 bits) and, mixed once more, a shift along each axis (10 bits each,
-/// scaled to `0..n`). Inline on x86-64 and AArch64 (a 2D band's point sample takes 10% fewer
-/// instructions on x86-64, 3D 7%); out of line elsewhere: in wasm for the demo's size budget,
-/// and on the firmware cores, where the copies in every block loop moved the instruction
-/// counts of the other noises sampled in the same program (Perlin 2D on the Cortex-M4F 134 →
-/// 140) for 1–3% on the blended band.
+/// scaled to `0..n`). Inline on x86-64 and AArch64, where it saves a band's point sample 7–10%
+/// of its instructions; out of line elsewhere: in wasm for the demo's size budget, and on the
+/// firmware cores, where its copies in every block loop change how the compiler inlines the
+/// other noises sampled in the same program (`bench/README.md` has the counts).
 #[cfg_attr(any(target_arch = "x86_64", target_arch = "aarch64"), inline)]
 #[cfg_attr(
     not(any(target_arch = "x86_64", target_arch = "aarch64")),

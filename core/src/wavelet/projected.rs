@@ -667,11 +667,12 @@ mod tests {
                         let scale = [2.0, 40.0, 3e5][i % 3];
                         let p = [0; 3].map(|_| rng.uniform(-scale, scale));
                         let unit = unit_normal(*n);
-                        // Along an axis, a window whose blocks are cached sums block by block
-                        // (`projected_axis`): within rounding of the reference, measured at
-                        // most 1.8e-7 (f32), 1.3e-16 (f64) of the bound and 23 units of
-                        // I16F16's last place (where it is closer to f64 than the reference:
-                        // 1.0–1.7e-4 against 2.2–2.5e-4); elsewhere the same bits.
+                        // Along an axis, a window whose axes reach at most two blocks each is
+                        // summed block by block (`projected_axis`): within rounding of the
+                        // reference, measured at most 1.8e-7 (f32), 1.3e-16 (f64) of the bound
+                        // and 23 units of I16F16's last place (where it is closer to f64 than
+                        // the reference: 1.0–1.7e-4 against 2.2–2.5e-4); elsewhere (oblique
+                        // normals, small tiles) the same bits.
                         let axis = unit.iter().filter(|&&x| x == 0.0).count() == 2;
                         let bound = f64::from(band.projected_bound());
                         let near = |a: f64, b: f64, tolerance: f64| {
