@@ -65,6 +65,16 @@ pub trait TileData<const D: usize> {
     }
     /// The largest `|coefficient|`.
     fn max_abs(&self) -> f32;
+    /// The 3 × 3 × 3 coefficients of a 3D tile at indices `(x[i], y[j], z[k])` (each below
+    /// `SIZE`), as `[k][j][i]`, given `unit == self.unit()`: one block's reads in a point sample
+    /// of a 3D band, which storage kept as nested arrays can make with one addition per line
+    /// of three instead of a flat index per coefficient. Only 3D bands call it (`D = 3`). The
+    /// default reads [`flat_with`](Self::flat_with) at `x[i] + SIZE·(y[j] + SIZE·z[k])`.
+    #[inline]
+    fn cube<R: Real>(&self, [x, y, z]: [[usize; 3]; 3], unit: R) -> [[[R; 3]; 3]; 3] {
+        let n = Self::SIZE;
+        z.map(|z| y.map(|y| x.map(|x| self.flat_with(x + n * (y + n * z), unit))))
+    }
 }
 
 impl<const N: usize> TileData<2> for Tile2<N> {
@@ -94,6 +104,19 @@ impl<const N: usize> TileData<3> for Tile3<N> {
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
         self.flat(x + N * (y + N * z))
+    }
+    #[inline]
+    fn cube<R: Real>(&self, [x, y, z]: [[usize; 3]; 3], _unit: R) -> [[[R; 3]; 3]; 3] {
+        // In range by construction; masked where `N` is a power of two (every default tile),
+        // so that the reads need no bounds checks, and read as 0 otherwise (never a panic).
+        let (x, y) = (x.map(|i| within(i, N)), y.map(|i| within(i, N)));
+        z.map(|z| {
+            let plane = self.data.get(within(z, N));
+            y.map(|y| {
+                let row = plane.and_then(|plane| plane.get(y));
+                x.map(|x| R::from_f32(row.and_then(|row| row.get(x)).copied().unwrap_or(0.0)))
+            })
+        })
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
@@ -605,6 +628,14 @@ impl<'t, T> Wavelet<'t, T> {
         // Every subset of the crossing axes, largest first.
         for m in (0..=crossing).rev().filter(|m| m & !crossing == 0) {
             let place = self.placement(self.step(block, m));
+            if CUBE && D == 3 {
+                // `skip` is false on these targets: every coefficient is read.
+                let weights = sided
+                    .each_ref()
+                    .map(|sides| core::array::from_fn(|a| &sides[m >> a & 1][a]));
+                self.add_cube(&mut sums, &weights, &place, m, &local0);
+                continue;
+            }
             axis_offsets(&mut off, &place, m, &local0, n);
             let mine = |a: usize, j: usize| !skip || members[m >> a & 1][a] >> j & 1 == 1;
             for (sum, sides) in sums.iter_mut().zip(&sided) {
@@ -977,6 +1008,90 @@ impl<T> Wavelet<'_, T> {
                     column = column.saturating_add(weights[1][jy][l].mul_fraction(line));
                 }
                 *s = s.saturating_add(weights[0][jx][l].mul_fraction(column));
+            }
+        }
+    }
+}
+
+/// Whether a 3D point sample reads each block as a [`TileData::cube`] summed by
+/// [`Wavelet::add_cube`] (x86-64 and AArch64), rather than coefficient by coefficient through
+/// flat indices ([`Wavelet::add_block`]): the same values in the same order, so the same bits.
+/// Not on the firmware cores and wasm, whose code size the six copies (one per axis
+/// permutation) would cost.
+const CUBE: bool = cfg!(any(target_arch = "x86_64", target_arch = "aarch64"));
+
+impl<T> Wavelet<'_, T> {
+    /// [`add_block`](Self::add_block) for a 3D point sample (one lane), each of the `K` sums
+    /// with its weights, every coefficient of the block placed by `place` read: the block's
+    /// 27 coefficients read at once by [`TileData::cube`] along the tile's axes, then summed in
+    /// `add_block`'s order. The sum is written once per axis permutation, so that which cube
+    /// entry each output coefficient is, is known at compile time.
+    #[inline]
+    fn add_cube<R: Real, const D: usize, const K: usize>(
+        &self,
+        sums: &mut [[R; 1]; K],
+        weights: &[[&[[R; 1]; 3]; D]; K],
+        place: &Placement<D>,
+        m: usize,
+        local0: &[[usize; 1]; D],
+    ) where
+        T: TileData<D>,
+    {
+        match place.variant % 6 {
+            0 => self.add_cube_as::<R, D, K, 0>(sums, weights, place, m, local0),
+            1 => self.add_cube_as::<R, D, K, 1>(sums, weights, place, m, local0),
+            2 => self.add_cube_as::<R, D, K, 2>(sums, weights, place, m, local0),
+            3 => self.add_cube_as::<R, D, K, 3>(sums, weights, place, m, local0),
+            4 => self.add_cube_as::<R, D, K, 4>(sums, weights, place, m, local0),
+            _ => self.add_cube_as::<R, D, K, 5>(sums, weights, place, m, local0),
+        }
+    }
+
+    /// [`add_cube`](Self::add_cube) for the blocks whose output axis `a` reads tile axis
+    /// `PERMUTATIONS3[P][a]` (`D = 3`).
+    #[inline]
+    fn add_cube_as<R: Real, const D: usize, const K: usize, const P: usize>(
+        &self,
+        sums: &mut [[R; 1]; K],
+        weights: &[[&[[R; 1]; 3]; D]; K],
+        place: &Placement<D>,
+        m: usize,
+        local0: &[[usize; 1]; D],
+    ) where
+        T: TileData<D>,
+    {
+        let n = T::SIZE;
+        let perm = PERMUTATIONS3[P];
+        let flips = place.variant / 6;
+        // The tile index along each tile axis of the three coefficients of the output axis
+        // that reads it, as `axis_offsets` computes them (before the strides).
+        let mut index = [[0usize; 3]; 3];
+        for (a, &target) in perm.iter().enumerate() {
+            let add = place.shift[a % D] + if m >> a & 1 == 1 { n } else { 2 * n };
+            for (j, i) in index[target].iter_mut().enumerate() {
+                let t = (local0[a % D][0] + j + add) % n;
+                *i = if flips >> a & 1 == 1 { n - 1 - t } else { t };
+            }
+        }
+        let cube = self.tile.cube::<R>(index, self.tile.unit::<R>());
+        for (sum, w) in sums.iter_mut().zip(weights) {
+            let [s] = sum;
+            for jx in 0..3 {
+                let mut column = R::ZERO;
+                for jy in 0..3 {
+                    let mut line = R::ZERO;
+                    for (jz, &[wz]) in w[2 % D].iter().enumerate() {
+                        // Tile axis `perm[a]` is at output axis a's coefficient `j[a]`.
+                        let mut k = [0; 3];
+                        for (&target, j) in perm.iter().zip([jx, jy, jz]) {
+                            k[target] = j;
+                        }
+                        let c = cube[k[2]][k[1]][k[0]];
+                        line = line.saturating_add(wz.mul_fraction(c));
+                    }
+                    column = column.saturating_add(w[1][jy][0].mul_fraction(line));
+                }
+                *s = s.saturating_add(w[0][jx][0].mul_fraction(column));
             }
         }
     }
