@@ -262,100 +262,128 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// `G_a` are the same sums with axis `a`'s B-splines replaced by their derivatives.
     ///
     /// `t` holds each axis's basis arguments from global coefficient `first`, `support` the
-    /// offsets where they lie in `(0, 3)`. The value and, with `GRADIENT`, `G_x`, `G_y`, `G_z`
-    /// (otherwise zeros); `None` where some axis's support reaches more than two blocks (tiles
-    /// narrower than the support and the blend zones, or an index that wraps around `i32`):
-    /// the caller then finds each coefficient through a `Window`. Out of line, one copy per
-    /// number type (the demo's module has a size budget; a call per sample costs nothing
-    /// against its thousands of instructions).
+    /// offsets where they lie in `(0, 3)`, `normal` the axis of the normal. Each axis is
+    /// resolved once from its support's first coefficient (its block and local index; the
+    /// other offsets' local indices follow by counting), and its weights kept per slot for
+    /// the [`span`] offsets from the support's start. The value and, with `GRADIENT`, `G_x`,
+    /// `G_y`, `G_z` (otherwise zeros); `None` where some axis's support reaches more than two
+    /// blocks (tiles narrower than the support and the blend zones), is wider than its span,
+    /// or nears the end of `i32`'s range: the caller then finds each coefficient through a
+    /// `Window`. Out of line, one copy per number type (the demo's module has a size budget;
+    /// a call per sample costs nothing against its thousands of instructions).
     #[inline(never)]
     fn projected_axis<R: Real, const GRADIENT: bool>(
         &self,
         first: [i32; 3],
         t: &[[R; WIDTH]; 3],
         support: &[Range<usize>; 3],
+        normal: usize,
     ) -> Option<[R; 4]> {
         let (n, h) = (T::SIZE, self.half_width::<3>());
-        // Per slot (the block of an axis's first coefficient in reach, or the next) and axis:
-        // the B-splines times the slot's blend weights, their derivatives times them, each
-        // coefficient's local index in the slot's block (plus n), and the offsets the block
-        // reaches (consecutive: the first block reaches a prefix, the next one a suffix).
-        let mut w = [[[R::ZERO; WIDTH]; 3]; 2];
-        let mut dw = [[[R::ZERO; WIDTH]; 3]; 2];
-        let mut local = [[[0usize; WIDTH]; 3]; 2];
-        let mut reach = [[0..0, 0..0, 0..0], [0..0, 0..0, 0..0]];
+        // Per slot (the block of an axis's first coefficient in its support, or the next)
+        // and axis, for the `span` offsets from the support's start: the B-splines times the
+        // slot's blend weights (0 beyond the block's reach, and past the support), their
+        // derivatives times them, and each offset's local index in the slot's block (plus n).
+        let mut w = [[[R::ZERO; SPAN]; 3]; 2];
+        let mut dw = [[[R::ZERO; SPAN]; 3]; 2];
+        let mut local = [[[0usize; SPAN]; 3]; 2];
         let mut base = [0i32; 3];
+        // Whether the next block reaches the support along each axis.
+        let mut two = [false; 3];
         for a in 0..3 {
-            let mut ends = [(WIDTH, 0); 2];
-            for k in support[a].clone() {
-                let k = k % WIDTH;
-                let (block, l_plus_n, zone) = first_block(first[a].wrapping_add(k as i32), n, h);
-                if k == support[a].start {
-                    base[a] = block;
-                }
-                let slot = block.wrapping_sub(base[a]) as u32 as usize;
-                if slot + usize::from(zone) > 1 {
-                    return None;
-                }
-                let b = bspline(t[a][k]);
-                // Its first block reaches it, with weight 1 or, in a zone, its blend weight;
-                // in a zone, the next block reaches it too.
-                for m in 0..=usize::from(zone) {
-                    // slot + m ≤ 1 (checked above); the mask shows the indexing in range.
-                    let (s, l) = ((slot + m) & 1, l_plus_n - m * n);
-                    let omega = if zone { blend_weight(l, n, h) } else { R::ONE };
-                    w[s][a][k] = b.mul_rn(omega);
-                    if GRADIENT {
-                        dw[s][a][k] = bspline_derivative(t[a][k]).mul_rn(omega);
-                    }
-                    local[s][a][k] = l;
-                    ends[s] = (ends[s].0.min(k), k + 1);
-                }
+            let (start, len, span) = (support[a].start, support[a].len(), span(a, normal));
+            if len == 0 {
+                return Some([R::ZERO; 4]); // nothing in reach (the sums start at +0)
             }
-            for (s, &(lo, hi)) in ends.iter().enumerate() {
-                reach[s][a] = lo..hi.max(lo);
+            // The support within its span and the span within the offsets, and no global
+            // index past `i32`'s range (the caller then takes the coefficients one by one).
+            let g = first[a].checked_add(start as i32)?;
+            if len > span || start + span > WIDTH || g.checked_add(span as i32).is_none() {
+                return None;
+            }
+            let (block, l0, _) = first_block(g, n, h);
+            base[a] = block;
+            // Offset i's local index in the first block is l0 + i (plus n), in the next
+            // l0 + i − n; the block after that reaches local l0 + i ≥ 3n − h.
+            if l0 + len > 3 * n - h {
+                return None;
+            }
+            two[a] = l0 + len > 2 * n - h;
+            for i in 0..len {
+                let t = t[a][(start + i) % WIDTH];
+                let (b, db) = (bspline(t), bspline_derivative(t));
+                for s in 0..2 {
+                    let l = l0 + i - s * n;
+                    let omega = blend_weight::<R>(l, n, h);
+                    w[s][a][i] = b.mul_rn(omega);
+                    if GRADIENT {
+                        dw[s][a][i] = db.mul_rn(omega);
+                    }
+                    local[s][a][i] = l;
+                }
             }
         }
+        Some(match normal {
+            0 => self.axis_blocks::<R, GRADIENT, 0>(&w, &dw, &local, two, base),
+            1 => self.axis_blocks::<R, GRADIENT, 1>(&w, &dw, &local, two, base),
+            _ => self.axis_blocks::<R, GRADIENT, 2>(&w, &dw, &local, two, base),
+        })
+    }
+
+    /// [`projected_axis`](Self::projected_axis)'s sums over the blocks, along axis `NORMAL`:
+    /// per block, the value's (and with `GRADIENT`, each `G_a`'s) sum over the `SPAN` offsets
+    /// from `start` along each axis ([`span`]: 6 along the normal, 3 across it), whatever the
+    /// block reaches of them: the others weigh 0 in `w` and `dw`, and add `±0` to sums that
+    /// start at `+0` and so are never `−0` (fixed point: 0), which leaves them as summing the
+    /// reached offsets alone leaves them, bit for bit. Loops of known lengths, so the
+    /// compiler unrolls them and keeps each axis's index parts in registers.
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    fn axis_blocks<R: Real, const GRADIENT: bool, const NORMAL: usize>(
+        &self,
+        w: &[[[R; SPAN]; 3]; 2],
+        dw: &[[[R; SPAN]; 3]; 2],
+        local: &[[[usize; SPAN]; 3]; 2],
+        two: [bool; 3],
+        base: [i32; 3],
+    ) -> [R; 4] {
+        let n = T::SIZE;
         let tile = self.tile();
         let unit = tile.unit::<R>();
         // The value, then G_x, G_y, G_z.
         let mut sums = [R::ZERO; 4];
         for block in 0..8 {
             let slot = |a: usize| block >> a & 1;
-            let reach: [Range<usize>; 3] = core::array::from_fn(|a| reach[slot(a)][a].clone());
-            if reach.iter().any(|r| r.is_empty()) {
+            if (0..3).any(|a| slot(a) == 1 && !two[a]) {
                 continue;
             }
             let place = self.placement(core::array::from_fn(|a| {
                 base[a].wrapping_add(slot(a) as i32)
             }));
-            // Each reached offset's part of the tile's flat index in this block.
-            let mut parts = [[0usize; WIDTH]; 3];
+            // Each offset's part of the tile's flat index in this block.
+            let mut parts = [[0usize; SPAN]; 3];
             for (a, part) in parts.iter_mut().enumerate() {
                 let axis = place.axis(a, n);
-                for k in reach[a].clone() {
-                    part[k % WIDTH] = axis.offset(local[slot(a)][a][k % WIDTH], n);
+                for (i, p) in part.iter_mut().enumerate().take(span(a, NORMAL)) {
+                    *p = axis.offset(local[slot(a)][a][i], n);
                 }
             }
-            // The reached offsets' parts and weights, as slices (no index masks in the loops).
-            let [px, py, pz] =
-                core::array::from_fn(|a| parts[a].get(reach[a].clone()).unwrap_or(&[]));
             for (set, sum) in sums
                 .iter_mut()
                 .enumerate()
                 .take(if GRADIENT { 4 } else { 1 })
             {
-                let [wx, wy, wz] = core::array::from_fn(|a| {
-                    let w = if set == a + 1 { &dw } else { &w };
-                    w[slot(a)][a].get(reach[a].clone()).unwrap_or(&[])
+                let weights: [[R; SPAN]; 3] = core::array::from_fn(|a| {
+                    let w = if set == a + 1 { dw } else { w };
+                    w[slot(a)][a]
                 });
                 let mut block_sum = R::ZERO;
-                for (&oz, &wz) in pz.iter().zip(wz) {
+                for (&oz, &wz) in parts[2].iter().zip(&weights[2]).take(span(2, NORMAL)) {
                     let mut plane = R::ZERO;
-                    for (&oy, &wy) in py.iter().zip(wy) {
+                    for (&oy, &wy) in parts[1].iter().zip(&weights[1]).take(span(1, NORMAL)) {
                         let row = oy + oz;
                         let mut line = R::ZERO;
-                        for (&ox, &wx) in px.iter().zip(wx) {
+                        for (&ox, &wx) in parts[0].iter().zip(&weights[0]).take(span(0, NORMAL)) {
                             let c = tile.flat_with(ox + row, unit);
                             line = line.saturating_add(wx.mul_rn(c));
                         }
@@ -366,8 +394,19 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 *sum = sum.saturating_add(block_sum);
             }
         }
-        Some(sums)
+        sums
     }
+}
+
+/// The most offsets a projected window has along an axis-aligned normal: 6 along it (`t` in
+/// `(0, 3)` rises by ½ per offset), 3 across it (by 1).
+const SPAN: usize = 6;
+
+/// The offsets [`Wavelet::axis_blocks`] sums along axis `a` of a window projected along axis
+/// `normal`.
+#[inline]
+const fn span(a: usize, normal: usize) -> usize {
+    if a == normal { SPAN } else { 3 }
 }
 
 /// The offsets `kmin..=kmax` from the cell, along one axis, of the coefficients the projected
@@ -505,7 +544,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
                 support[a] = lo..hi.max(lo);
             }
-            if let Some(sums) = self.projected_axis::<R, GRADIENT>(first, &t, &support) {
+            let normal = nrm.iter().position(|&x| x != R::ZERO).unwrap_or(2);
+            if let Some(sums) = self.projected_axis::<R, GRADIENT>(first, &t, &support, normal) {
                 let sums = Sums::<R, GRADIENT> {
                     value: sums[0],
                     partial: [sums[1], sums[2], sums[3]],
@@ -756,13 +796,13 @@ mod tests {
         for first in [[-3, -2, 3], [0, 5, 7], [-40, 7, 1003]] {
             let band = Wavelet::new(0, &crate::wavelet::TILE3);
             assert!(
-                band.projected_axis::<f32, false>(first, &t, &support)
+                band.projected_axis::<f32, false>(first, &t, &support, 2)
                     .is_some()
             );
             let small = Wavelet::new(5, &TILE4).with_tiling(Tiling::Varied);
             assert!(
                 small
-                    .projected_axis::<f32, false>(first, &t, &support)
+                    .projected_axis::<f32, false>(first, &t, &support, 2)
                     .is_none()
             );
         }
