@@ -323,29 +323,35 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
             }
         }
+        // One copy per normal axis, whose loops have known lengths, where code size is cheap;
+        // in wasm, one copy for the demo's size budget (the three took 4 KB).
+        if cfg!(target_arch = "wasm32") {
+            return Some(self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, normal));
+        }
         Some(match normal {
-            0 => self.axis_blocks::<R, GRADIENT, 0>(&w, &dw, &local, two, base),
-            1 => self.axis_blocks::<R, GRADIENT, 1>(&w, &dw, &local, two, base),
-            _ => self.axis_blocks::<R, GRADIENT, 2>(&w, &dw, &local, two, base),
+            0 => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 0),
+            1 => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 1),
+            _ => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 2),
         })
     }
 
-    /// [`projected_axis`](Self::projected_axis)'s sums over the blocks, along axis `NORMAL`:
+    /// [`projected_axis`](Self::projected_axis)'s sums over the blocks, along axis `normal`:
     /// per block, the value's (and with `GRADIENT`, each `G_a`'s) sum over the `SPAN` offsets
     /// from `start` along each axis ([`span`]: 6 along the normal, 3 across it), whatever the
     /// block reaches of them: the others weigh 0 in `w` and `dw`, and add `±0` to sums that
     /// start at `+0` and so are never `−0` (fixed point: 0), which leaves them as summing the
-    /// reached offsets alone leaves them, bit for bit. Loops of known lengths, so the
-    /// compiler unrolls them and keeps each axis's index parts in registers.
-    #[inline]
-    #[allow(clippy::too_many_arguments)]
-    fn axis_blocks<R: Real, const GRADIENT: bool, const NORMAL: usize>(
+    /// reached offsets alone leaves them, bit for bit. Inlined wherever `normal` is a constant,
+    /// its loops have known lengths: the compiler unrolls them and keeps each axis's index
+    /// parts in registers.
+    #[inline(always)]
+    fn axis_blocks<R: Real, const GRADIENT: bool>(
         &self,
         w: &[[[R; SPAN]; 3]; 2],
         dw: &[[[R; SPAN]; 3]; 2],
         local: &[[[usize; SPAN]; 3]; 2],
         two: [bool; 3],
         base: [i32; 3],
+        normal: usize,
     ) -> [R; 4] {
         let n = T::SIZE;
         let tile = self.tile();
@@ -364,7 +370,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             let mut parts = [[0usize; SPAN]; 3];
             for (a, part) in parts.iter_mut().enumerate() {
                 let axis = place.axis(a, n);
-                for (i, p) in part.iter_mut().enumerate().take(span(a, NORMAL)) {
+                for (i, p) in part.iter_mut().enumerate().take(span(a, normal)) {
                     *p = axis.offset(local[slot(a)][a][i], n);
                 }
             }
@@ -378,12 +384,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     w[slot(a)][a]
                 });
                 let mut block_sum = R::ZERO;
-                for (&oz, &wz) in parts[2].iter().zip(&weights[2]).take(span(2, NORMAL)) {
+                for (&oz, &wz) in parts[2].iter().zip(&weights[2]).take(span(2, normal)) {
                     let mut plane = R::ZERO;
-                    for (&oy, &wy) in parts[1].iter().zip(&weights[1]).take(span(1, NORMAL)) {
+                    for (&oy, &wy) in parts[1].iter().zip(&weights[1]).take(span(1, normal)) {
                         let row = oy + oz;
                         let mut line = R::ZERO;
-                        for (&ox, &wx) in parts[0].iter().zip(&weights[0]).take(span(0, NORMAL)) {
+                        for (&ox, &wx) in parts[0].iter().zip(&weights[0]).take(span(0, normal)) {
                             let c = tile.flat_with(ox + row, unit);
                             line = line.saturating_add(wx.mul_rn(c));
                         }
