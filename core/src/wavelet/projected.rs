@@ -379,17 +379,17 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 .enumerate()
                 .take(if GRADIENT { 4 } else { 1 })
             {
-                let weights: [[R; SPAN]; 3] = core::array::from_fn(|a| {
+                let weights: [&[R; SPAN]; 3] = core::array::from_fn(|a| {
                     let w = if set == a + 1 { dw } else { w };
-                    w[slot(a)][a]
+                    &w[slot(a)][a]
                 });
                 let mut block_sum = R::ZERO;
-                for (&oz, &wz) in parts[2].iter().zip(&weights[2]).take(span(2, normal)) {
+                for (&oz, &wz) in parts[2].iter().zip(weights[2]).take(span(2, normal)) {
                     let mut plane = R::ZERO;
-                    for (&oy, &wy) in parts[1].iter().zip(&weights[1]).take(span(1, normal)) {
+                    for (&oy, &wy) in parts[1].iter().zip(weights[1]).take(span(1, normal)) {
                         let row = oy + oz;
                         let mut line = R::ZERO;
-                        for (&ox, &wx) in parts[0].iter().zip(&weights[0]).take(span(0, normal)) {
+                        for (&ox, &wx) in parts[0].iter().zip(weights[0]).take(span(0, normal)) {
                             let c = tile.flat_with(ox + row, unit);
                             line = line.saturating_add(wx.mul_rn(c));
                         }
