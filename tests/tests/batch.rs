@@ -7,8 +7,8 @@ use bandnoise::batch::{Grid, LANES};
 use bandnoise::fractal::{Fractal, Octaves};
 use bandnoise::prelude::*;
 use bandnoise::wavelet::{
-    Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, TileData, Tiling,
-    Wavelet,
+    Bands, Distribution, Multiband, TILE2, TILE2_I16, TILE3, TILE3_I16, Tile2, Tile3, TileData,
+    Tiling, Wavelet,
 };
 use bandnoise_tests::{AllTypes, Lattice, Rng};
 
@@ -196,6 +196,13 @@ fn wavelet_noise_in_batch_equals_point_evaluation() {
     check_all_types::<2, _>("wavelet blended", &blended, &mut rng);
     let blended = Wavelet::new(6, &TILE3_I16).with_tiling(Tiling::Blended);
     check_all_types::<3, _>("wavelet blended i16", &blended, &mut rng);
+    // A 3D tile whose side is not a power of two: a point sample reads each block through
+    // `Tile3::cube` (on x86-64 and AArch64), with checked indices, where the batch path reads
+    // flat indices; blended (12 has room for the zones) and varied.
+    static ODD: Tile3<12> = Tile3::generate(5);
+    check_all_types::<3, _>("wavelet 12³", &Wavelet::new(2, &ODD), &mut rng);
+    let varied = Wavelet::new(2, &ODD).with_tiling(Tiling::Varied);
+    check_all_types::<3, _>("wavelet 12³ varied", &varied, &mut rng);
     // Fine grids: whole chunks inside one block (the vectorised path), and across borders.
     // Rows whose coefficients reach into the next block along y or z (every lane alike).
     for fine in [
