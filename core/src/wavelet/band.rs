@@ -1048,7 +1048,8 @@ impl<T> Wavelet<'_, T> {
     }
 
     /// [`add_cube`](Self::add_cube) for the blocks whose output axis `a` reads tile axis
-    /// `PERMUTATIONS3[P][a]` (`D = 3`).
+    /// `PERMUTATIONS3[P][a]`. Only called with `D = 3`; the indices taken `% D` keep the
+    /// 2D instantiation, which nothing calls, free of out-of-range indexing.
     #[inline]
     fn add_cube_as<R: Real, const D: usize, const K: usize, const P: usize>(
         &self,
