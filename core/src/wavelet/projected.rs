@@ -336,8 +336,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     }
 
     /// [`projected_axis`](Self::projected_axis)'s sums over the blocks, along axis `normal`:
-    /// per block, the value's (and with `GRADIENT`, each `G_a`'s) sum over the `SPAN` offsets
-    /// from `start` along each axis ([`span`]: 6 along the normal, 3 across it), whatever the
+    /// per block, the value's (and with `GRADIENT`, each `G_a`'s) sum over the offsets from
+    /// each axis's support's start ([`span`]: 6 along the normal, 3 across it), whatever the
     /// block reaches of them: the others weigh 0 in `w` and `dw`, and add `±0` to sums that
     /// start at `+0` and so are never `−0` (fixed point: 0), which leaves them as summing the
     /// reached offsets alone leaves them, bit for bit. Inlined wherever `normal` is a constant,
