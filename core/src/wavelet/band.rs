@@ -448,9 +448,26 @@ impl AxisMap {
     /// `n`): `(l + shift) mod n`, reversed if the axis runs backwards, times the stride.
     #[inline]
     pub(crate) fn offset(&self, l_plus_n: usize, n: usize) -> usize {
-        let t = (l_plus_n + self.shift) % n;
-        (if self.flip { n - 1 - t } else { t }) * self.stride
+        oriented(l_plus_n + self.shift, n, self.flip) * self.stride
     }
+}
+
+/// The tile index, along the tile axis it reads, of a coefficient at `u` (its local index
+/// plus the block's shift, plus a multiple of `n`): `u mod n`, reversed if the axis runs
+/// backwards.
+#[inline]
+fn oriented(u: usize, n: usize, flip: bool) -> usize {
+    let t = u % n;
+    if flip { n - 1 - t } else { t }
+}
+
+/// What [`oriented`] takes added to a local index of the first block along output axis `a`,
+/// read by the block `m` steps (one bit per axis) past it: the block's shift, plus `2n`, less
+/// `n` if the block is the next one along `a` (a local index ≥ −h − n past the first block,
+/// h < n, so the sum is never negative).
+#[inline]
+fn block_start<const D: usize>(place: &Placement<D>, a: usize, m: usize, n: usize) -> usize {
+    place.shift[a] + if m >> a & 1 == 1 { n } else { 2 * n }
 }
 
 impl<const D: usize> Placement<D> {
@@ -504,12 +521,10 @@ fn axis_offsets<const D: usize, const L: usize>(
     for a in 0..D {
         let (target, flip) = axis_map::<D>(place.variant, a);
         let stride = [1, n, n * n][target];
-        // local + shift + 2n − n·m_a ≥ 0: local ≥ −h − n past the first block, h < n.
-        let add = place.shift[a] + if m >> a & 1 == 1 { n } else { 2 * n };
+        let add = block_start(place, a, m, n);
         for (j, oj) in offset[a].iter_mut().enumerate() {
             for (o, &l0) in oj.iter_mut().zip(&local0[a]) {
-                let t = (l0 + j + add) % n;
-                *o = (if flip { n - 1 - t } else { t }) * stride;
+                *o = oriented(l0 + j + add, n, flip) * stride;
             }
         }
     }
@@ -1068,10 +1083,9 @@ impl<T> Wavelet<'_, T> {
         // that reads it, as `axis_offsets` computes them (before the strides).
         let mut index = [[0usize; 3]; 3];
         for (a, &target) in perm.iter().enumerate() {
-            let add = place.shift[a % D] + if m >> a & 1 == 1 { n } else { 2 * n };
+            let add = block_start(place, a % D, m, n);
             for (j, i) in index[target].iter_mut().enumerate() {
-                let t = (local0[a % D][0] + j + add) % n;
-                *i = if flips >> a & 1 == 1 { n - 1 - t } else { t };
+                *i = oriented(local0[a % D][0] + j + add, n, flips >> a & 1 == 1);
             }
         }
         let cube = self.tile.cube::<R>(index, self.tile.unit::<R>());
