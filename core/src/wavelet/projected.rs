@@ -250,6 +250,57 @@ impl<T: TileData<3>> Wavelet<'_, T> {
 }
 
 impl<T: TileData<3>> Wavelet<'_, T> {
+    /// [`projected_fast`](Self::projected_fast) along an axis-aligned unit normal (two
+    /// components zero, the third at most 1 in magnitude), summed block by block
+    /// ([`projected_axis`](Self::projected_axis)); `None` for another normal, or a window
+    /// `projected_axis` does not take, which the caller then sums coefficient by coefficient.
+    ///
+    /// Each axis's basis arguments are computed only at the offsets from the cell that can
+    /// reach `(0, 3)` ([`ACROSS`], [`ALONG`]), by the window path's operations,
+    /// `t = (3/2 − d) + n_a (n_a d)/2` with `d = frac − k`: the same numbers, and so the same
+    /// support, the offsets where `t` lies in `(0, 3)` (consecutive: `t` falls by at least ½
+    /// per offset). What the window path computes besides, for every offset of a bounding box
+    /// sized for any normal, took a fifth of an axis-aligned sample's instructions.
+    #[inline]
+    fn projected_along<R: Real, const GRADIENT: bool>(
+        &self,
+        p: [R; 3],
+        nrm: [R; 3],
+    ) -> Option<Sums<R, GRADIENT>> {
+        let normal = nrm.iter().position(|&x| x != R::ZERO)?;
+        if nrm.iter().filter(|&&x| x == R::ZERO).count() != 2 || nrm[normal].abs() > R::ONE {
+            return None;
+        }
+        let (half, three) = (R::from_ratio(1, 1), R::from_i32(3));
+        let mut first = [0i32; 3];
+        let mut t = [[R::ZERO; WIDTH]; 3];
+        let mut support = [0..0, 0..0, 0..0];
+        for a in 0..3 {
+            let (cell, frac) = p[a].split();
+            let [lo, hi] = if a == normal { ALONG } else { ACROSS };
+            let (mut from, mut len) = (lo, 0);
+            for k in lo..hi {
+                let d = frac - R::from_i32(k);
+                let ta = (R::from_ratio(3, 1) - d) + nrm[a].mul_rn(nrm[a].mul_rn(d)).mul_rn(half);
+                if ta > R::ZERO && ta < three {
+                    if len == 0 {
+                        from = k;
+                    }
+                    // At most 6 offsets (`ALONG`), so below WIDTH.
+                    t[a][len % WIDTH] = ta;
+                    len += 1;
+                }
+            }
+            first[a] = cell.checked_add(from)?;
+            support[a] = 0..len;
+        }
+        let sums = self.projected_axis::<R, GRADIENT>(first, &t, &support, normal)?;
+        Some(Sums {
+            value: sums[0],
+            partial: [sums[1], sums[2], sums[3]],
+        })
+    }
+
     /// [`projected_fast`](Self::projected_fast)'s sums along an axis-aligned normal, block by
     /// block: the basis is a product of per-axis B-splines `Π_a B(t_a)`, and a blended
     /// coefficient is the sum, over the blocks that reach it, of the block's tile read times
@@ -404,6 +455,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     }
 }
 
+/// The offsets `k` from the cell (`lo..hi`) whose basis argument can lie in `(0, 3)` across an
+/// axis-aligned normal: `t = 3/2 − (frac − k)`, `frac` in `[0, 1)`, so `|frac − k| < 3/2`.
+const ACROSS: [i32; 2] = [-1, 3];
+
+/// [`ACROSS`] along the normal `n_a`, `|n_a| ≤ 1`: `t = 3/2 − (frac − k)(1 − n_a²/2)`, so
+/// `|frac − k| < 3` (rounding keeps `k = −3` and `k = 4` at `t ≤ 0` and `t ≥ 3`).
+const ALONG: [i32; 2] = [-2, 4];
+
 /// The most offsets a projected window has along an axis-aligned normal: 6 along it (`t` in
 /// `(0, 3)` rises by ½ per offset), 3 across it (by 1).
 const SPAN: usize = 6;
@@ -510,8 +569,10 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         p: [R; 3],
         nrm: [R; 3],
     ) -> (R, [R; 3]) {
+        if let Some(sums) = self.projected_along::<R, GRADIENT>(p, nrm) {
+            return sums.finish(nrm);
+        }
         let half = R::from_ratio(1, 1);
-        let three = R::from_i32(3);
         let mut first = [0i32; 3];
         let mut count = [0usize; 3];
         // Per axis and offset j (coefficient first + j): 3/2 − d and n_a d_a, d = p − c.
@@ -532,31 +593,6 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     *c = R::from_ratio(3, 1) - d;
                     *e = nrm[a].mul_rn(d);
                 }
-            }
-        }
-        if nrm.iter().filter(|&&x| x == R::ZERO).count() == 2 {
-            let mut t = [[R::ZERO; WIDTH]; 3];
-            let mut support = [0..0, 0..0, 0..0];
-            for a in 0..3 {
-                // t rises with the offset, so the offsets with t in (0, 3) are consecutive.
-                let (mut lo, mut hi) = (count[a], 0);
-                for j in 0..count[a] {
-                    let j = j % WIDTH;
-                    t[a][j] = centre[a][j] + nrm[a].mul_rn(along[a][j]).mul_rn(half);
-                    if t[a][j] > R::ZERO && t[a][j] < three {
-                        lo = lo.min(j);
-                        hi = j + 1;
-                    }
-                }
-                support[a] = lo..hi.max(lo);
-            }
-            let normal = nrm.iter().position(|&x| x != R::ZERO).unwrap_or(2);
-            if let Some(sums) = self.projected_axis::<R, GRADIENT>(first, &t, &support, normal) {
-                let sums = Sums::<R, GRADIENT> {
-                    value: sums[0],
-                    partial: [sums[1], sums[2], sums[3]],
-                };
-                return sums.finish(nrm);
             }
         }
         // Coefficient by coefficient: oblique normals, and the axis-aligned windows whose
