@@ -333,11 +333,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let (n, h) = (T::SIZE, self.half_width::<3>());
         // Per slot (the block of an axis's first coefficient in its support, or the next)
         // and axis, for the `span` offsets from the support's start: the B-splines times the
-        // slot's blend weights (0 beyond the block's reach, and past the support), their
-        // derivatives times them, and each offset's local index in the slot's block (plus n).
+        // slot's blend weights (0 beyond the block's reach, and past the support), and their
+        // derivatives times them; per axis, the local index (plus n) of the support's first
+        // coefficient in the first slot's block.
         let mut w = [[[R::ZERO; SPAN]; 3]; 2];
         let mut dw = [[[R::ZERO; SPAN]; 3]; 2];
-        let mut local = [[[0usize; SPAN]; 3]; 2];
+        let mut local = [0usize; 3];
         let mut base = [0i32; 3];
         // Whether the next block reaches the support along each axis.
         let mut two = [false; 3];
@@ -353,36 +354,36 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 return None;
             }
             let (block, l0, _) = first_block(g, n, h);
-            base[a] = block;
+            (base[a], local[a]) = (block, l0);
             // Offset i's local index in the first block is l0 + i (plus n), in the next
             // l0 + i − n; the block after that reaches local l0 + i ≥ 3n − h.
             if l0 + len > 3 * n - h {
                 return None;
             }
             two[a] = l0 + len > 2 * n - h;
+            // The next slot's weights only where its block reaches the support.
+            let slots = 1 + usize::from(two[a]);
             for i in 0..len {
                 let t = t[a][(start + i) % WIDTH];
                 let (b, db) = (bspline(t), bspline_derivative(t));
-                for s in 0..2 {
-                    let l = l0 + i - s * n;
-                    let omega = blend_weight::<R>(l, n, h);
+                for s in 0..slots {
+                    let omega = blend_weight::<R>(l0 + i - s * n, n, h);
                     w[s][a][i] = b.mul_rn(omega);
                     if GRADIENT {
                         dw[s][a][i] = db.mul_rn(omega);
                     }
-                    local[s][a][i] = l;
                 }
             }
         }
         // One copy per normal axis, whose loops have known lengths, where code size is cheap;
         // in wasm, one copy for the demo's size budget (the three took 4 KB).
         if cfg!(target_arch = "wasm32") {
-            return Some(self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, normal));
+            return Some(self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, normal));
         }
         Some(match normal {
-            0 => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 0),
-            1 => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 1),
-            _ => self.axis_blocks::<R, GRADIENT>(&w, &dw, &local, two, base, 2),
+            0 => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 0),
+            1 => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 1),
+            _ => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 2),
         })
     }
 
@@ -399,7 +400,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         &self,
         w: &[[[R; SPAN]; 3]; 2],
         dw: &[[[R; SPAN]; 3]; 2],
-        local: &[[[usize; SPAN]; 3]; 2],
+        local: [usize; 3],
         two: [bool; 3],
         base: [i32; 3],
         normal: usize,
@@ -417,12 +418,15 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             let place = self.placement(core::array::from_fn(|a| {
                 base[a].wrapping_add(slot(a) as i32)
             }));
-            // Each offset's part of the tile's flat index in this block.
+            // Each offset's part of the tile's flat index in this block (its local index
+            // l0 + i in the first slot's block, l0 + i − n in the next: the same index mod n).
+            // Past the support, or the block's reach, the part is some coefficient's, read
+            // with weight 0.
             let mut parts = [[0usize; SPAN]; 3];
             for (a, part) in parts.iter_mut().enumerate() {
                 let axis = place.axis(a, n);
                 for (i, p) in part.iter_mut().enumerate().take(span(a, normal)) {
-                    *p = axis.offset(local[slot(a)][a][i], n);
+                    *p = axis.offset(local[a] + i, n);
                 }
             }
             for (set, sum) in sums
