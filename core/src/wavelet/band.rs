@@ -394,7 +394,7 @@ pub(crate) fn blend_weight<R: Real>(l_plus_n: usize, n: usize, h: usize) -> R {
 }
 
 /// Axis permutations of 3 axes (output axis → tile axis).
-const PERMUTATIONS3: [[usize; 3]; 6] = [
+pub(crate) const PERMUTATIONS3: [[usize; 3]; 6] = [
     [0, 1, 2],
     [0, 2, 1],
     [1, 0, 2],
@@ -445,10 +445,17 @@ pub(crate) struct AxisMap {
 
 impl AxisMap {
     /// The part of the tile's flat index of local index `l` (in `[−h, n + h)`, passed plus
-    /// `n`): `(l + shift) mod n`, reversed if the axis runs backwards, times the stride.
+    /// `n`): its [`coordinate`](Self::coordinate) times the stride.
     #[inline]
     pub(crate) fn offset(&self, l_plus_n: usize, n: usize) -> usize {
-        oriented(l_plus_n + self.shift, n, self.flip) * self.stride
+        self.coordinate(l_plus_n, n) * self.stride
+    }
+
+    /// The index along the tile axis it reads of local index `l` (passed plus `n`, or plus
+    /// any multiple of `n`): `(l + shift) mod n`, reversed if the axis runs backwards.
+    #[inline]
+    pub(crate) fn coordinate(&self, l_plus_n: usize, n: usize) -> usize {
+        oriented(l_plus_n + self.shift, n, self.flip)
     }
 }
 
@@ -471,6 +478,12 @@ fn block_start<const D: usize>(place: &Placement<D>, a: usize, m: usize, n: usiz
 }
 
 impl<const D: usize> Placement<D> {
+    /// The index in [`PERMUTATIONS3`] of the tile axes a 3D block's output axes read.
+    #[inline]
+    pub(crate) fn permutation(&self) -> usize {
+        (self.variant % 6) as usize
+    }
+
     /// How output axis `a` reads the tile in this placement.
     #[inline]
     pub(crate) fn axis(&self, a: usize, n: usize) -> AxisMap {
@@ -1033,7 +1046,7 @@ impl<T> Wavelet<'_, T> {
 /// flat indices ([`Wavelet::add_block`]): the same values in the same order, so the same bits.
 /// Not on the firmware cores and wasm, whose code size the six copies (one per axis
 /// permutation) would cost.
-const CUBE: bool = cfg!(any(target_arch = "x86_64", target_arch = "aarch64"));
+pub(crate) const CUBE: bool = cfg!(any(target_arch = "x86_64", target_arch = "aarch64"));
 
 impl<T> Wavelet<'_, T> {
     /// [`add_block`](Self::add_block) for a 3D point sample (one lane), each of the `K` sums
@@ -1052,7 +1065,7 @@ impl<T> Wavelet<'_, T> {
     ) where
         T: TileData<D>,
     {
-        match place.variant % 6 {
+        match place.permutation() {
             0 => self.add_cube_as::<R, D, K, 0>(sums, weights, place, m, local0),
             1 => self.add_cube_as::<R, D, K, 1>(sums, weights, place, m, local0),
             2 => self.add_cube_as::<R, D, K, 2>(sums, weights, place, m, local0),

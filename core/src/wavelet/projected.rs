@@ -26,7 +26,9 @@ use crate::{ProjectedNoise, Real};
 
 use core::ops::Range;
 
-use super::band::{TileData, Wavelet, blend_weight, first_block};
+use super::band::{
+    CUBE, PERMUTATIONS3, Placement, TileData, Wavelet, blend_weight, first_block, within,
+};
 use super::window::{WIDTH, Window};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
@@ -262,7 +264,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// per offset). What the window path computes besides, for every offset of a bounding box
     /// sized for any normal, took a fifth of an axis-aligned sample's instructions.
     #[inline]
-    fn projected_along<R: Real, const GRADIENT: bool>(
+    fn projected_along<R: Real, const GRADIENT: bool, const PERMUTED: bool>(
         &self,
         p: [R; 3],
         nrm: [R; 3],
@@ -294,7 +296,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             first[a] = cell.checked_add(from)?;
             support[a] = 0..len;
         }
-        let sums = self.projected_axis::<R, GRADIENT>(first, &t, &support, normal)?;
+        let sums = self.projected_axis::<R, GRADIENT, PERMUTED>(first, &t, &support, normal)?;
         Some(Sums {
             value: sums[0],
             partial: [sums[1], sums[2], sums[3]],
@@ -323,7 +325,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// `Window`. Out of line, one copy per number type (the demo's module has a size budget;
     /// a call per sample costs nothing against its thousands of instructions).
     #[inline(never)]
-    fn projected_axis<R: Real, const GRADIENT: bool>(
+    fn projected_axis<R: Real, const GRADIENT: bool, const PERMUTED: bool>(
         &self,
         first: [i32; 3],
         t: &[[R; WIDTH]; 3],
@@ -378,12 +380,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         // One copy per normal axis, whose loops have known lengths, where code size is cheap;
         // in wasm, one copy for the demo's size budget (the three took 4 KB).
         if cfg!(target_arch = "wasm32") {
-            return Some(self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, normal));
+            return Some(
+                self.axis_blocks::<R, GRADIENT, PERMUTED>(&w, &dw, local, two, base, normal),
+            );
         }
         Some(match normal {
-            0 => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 0),
-            1 => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 1),
-            _ => self.axis_blocks::<R, GRADIENT>(&w, &dw, local, two, base, 2),
+            0 => self.axis_blocks::<R, GRADIENT, PERMUTED>(&w, &dw, local, two, base, 0),
+            1 => self.axis_blocks::<R, GRADIENT, PERMUTED>(&w, &dw, local, two, base, 1),
+            _ => self.axis_blocks::<R, GRADIENT, PERMUTED>(&w, &dw, local, two, base, 2),
         })
     }
 
@@ -394,9 +398,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// start at `+0` and so are never `−0` (fixed point: 0), which leaves them as summing the
     /// reached offsets alone leaves them, bit for bit. Inlined wherever `normal` is a constant,
     /// its loops have known lengths: the compiler unrolls them and keeps each axis's index
-    /// parts in registers.
+    /// parts in registers. With `PERMUTED` ([`CUBE`]: x86-64 and AArch64), each block is summed
+    /// by a copy for its axis permutation ([`permuted_sums`](Self::permuted_sums)); otherwise
+    /// (the firmware cores and wasm, whose code size six copies would cost) through flat
+    /// index parts: the same reads in the same order, so the same bits (a test compares them).
     #[inline(always)]
-    fn axis_blocks<R: Real, const GRADIENT: bool>(
+    fn axis_blocks<R: Real, const GRADIENT: bool, const PERMUTED: bool>(
         &self,
         w: &[[[R; SPAN]; 3]; 2],
         dw: &[[[R; SPAN]; 3]; 2],
@@ -418,6 +425,21 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             let place = self.placement(core::array::from_fn(|a| {
                 base[a].wrapping_add(slot(a) as i32)
             }));
+            let weights = |set: usize| -> [&[R; SPAN]; 3] {
+                core::array::from_fn(|a| &(if set == a + 1 { dw } else { w })[slot(a)][a])
+            };
+            if PERMUTED {
+                let at = (&mut sums, weights, &place, local, normal);
+                match place.permutation() {
+                    0 => self.permuted_sums::<R, GRADIENT, 0>(at),
+                    1 => self.permuted_sums::<R, GRADIENT, 1>(at),
+                    2 => self.permuted_sums::<R, GRADIENT, 2>(at),
+                    3 => self.permuted_sums::<R, GRADIENT, 3>(at),
+                    4 => self.permuted_sums::<R, GRADIENT, 4>(at),
+                    _ => self.permuted_sums::<R, GRADIENT, 5>(at),
+                }
+                continue;
+            }
             // Each offset's part of the tile's flat index in this block (its local index
             // l0 + i in the first slot's block, l0 + i − n in the next: the same index mod n).
             // Past the support, or the block's reach, the part is some coefficient's, read
@@ -429,33 +451,87 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                     *p = axis.offset(local[a] + i, n);
                 }
             }
-            for (set, sum) in sums
-                .iter_mut()
-                .enumerate()
-                .take(if GRADIENT { 4 } else { 1 })
-            {
-                let weights: [&[R; SPAN]; 3] = core::array::from_fn(|a| {
-                    let w = if set == a + 1 { dw } else { w };
-                    &w[slot(a)][a]
-                });
-                let mut block_sum = R::ZERO;
-                for (&oz, &wz) in parts[2].iter().zip(weights[2]).take(span(2, normal)) {
-                    let mut plane = R::ZERO;
-                    for (&oy, &wy) in parts[1].iter().zip(weights[1]).take(span(1, normal)) {
-                        let row = oy + oz;
-                        let mut line = R::ZERO;
-                        for (&ox, &wx) in parts[0].iter().zip(weights[0]).take(span(0, normal)) {
-                            let c = tile.flat_with(ox + row, unit);
-                            line = line.saturating_add(wx.mul_rn(c));
-                        }
-                        plane = plane.saturating_add(wy.mul_rn(line));
-                    }
-                    block_sum = block_sum.saturating_add(wz.mul_rn(plane));
-                }
-                *sum = sum.saturating_add(block_sum);
-            }
+            block_sums::<R, GRADIENT>(&mut sums, weights, normal, |[jx, jy, jz]| {
+                tile.flat_with(parts[0][jx] + (parts[1][jy] + parts[2][jz]), unit)
+            });
         }
         sums
+    }
+
+    /// [`axis_blocks`](Self::axis_blocks)' sums over one block, for the blocks whose output
+    /// axis `a` reads tile axis `PERMUTATIONS3[P][a]`: each coefficient read at its indices
+    /// along the tile's axes, each masked where `n` is a power of two (every default tile), so
+    /// that the optimiser sees the flat index `x + n·(y + n·z)` in range: no mask per read, and
+    /// the masks of the indices that stay fixed over a loop computed once. (Through flat index
+    /// parts, whose strides are known only at run time, each read was masked.) Written once
+    /// per permutation, so that each output axis's stride is known at compile time, as
+    /// [`Wavelet::add_cube`] is for a band's point samples.
+    #[inline(always)]
+    fn permuted_sums<'w, R: Real, const GRADIENT: bool, const P: usize>(
+        &self,
+        (sums, weights, place, local, normal): PermutedSums<
+            '_,
+            'w,
+            R,
+            impl Fn(usize) -> [&'w [R; SPAN]; 3],
+        >,
+    ) {
+        let (n, tile) = (T::SIZE, self.tile());
+        let unit = tile.unit::<R>();
+        let perm = PERMUTATIONS3[P];
+        // Each offset's index along the tile axis its output axis reads.
+        let mut coordinate = [[0usize; SPAN]; 3];
+        for (a, c) in coordinate.iter_mut().enumerate() {
+            let axis = place.axis(a, n);
+            for (i, c) in c.iter_mut().enumerate().take(span(a, normal)) {
+                *c = axis.coordinate(local[a] + i, n);
+            }
+        }
+        block_sums::<R, GRADIENT>(sums, weights, normal, |j| {
+            let mut k = [0usize; 3];
+            for (a, &target) in perm.iter().enumerate() {
+                k[target] = within(coordinate[a][j[a] % SPAN], n);
+            }
+            tile.flat_with(k[0] + n * (k[1] + n * k[2]), unit)
+        });
+    }
+}
+
+/// What [`Wavelet::permuted_sums`] takes: the sums, each set's weights (see [`block_sums`]), the
+/// block's placement, each axis's first local index, and the normal's axis.
+type PermutedSums<'s, 'w, R, W> = (&'s mut [R; 4], W, &'s Placement<3>, [usize; 3], usize);
+
+/// One block's part of [`Wavelet::axis_blocks`]' sums: for each sum (the value, then with
+/// `GRADIENT` each `G_a`) with its weights (`weights(set)`: per axis, the block's slot's
+/// B-splines, or for `G_a` along axis `a` their derivatives, times the blend weights), the
+/// coefficients `read([jx, jy, jz])` at the offsets from each axis's support's start, summed
+/// with z outermost and x innermost, then added to the sum.
+#[inline(always)]
+fn block_sums<'w, R: Real + 'w, const GRADIENT: bool>(
+    sums: &mut [R; 4],
+    weights: impl Fn(usize) -> [&'w [R; SPAN]; 3],
+    normal: usize,
+    read: impl Fn([usize; 3]) -> R,
+) {
+    for (set, sum) in sums
+        .iter_mut()
+        .enumerate()
+        .take(if GRADIENT { 4 } else { 1 })
+    {
+        let [wx, wy, wz] = weights(set);
+        let mut block_sum = R::ZERO;
+        for (jz, &wz) in wz.iter().enumerate().take(span(2, normal)) {
+            let mut plane = R::ZERO;
+            for (jy, &wy) in wy.iter().enumerate().take(span(1, normal)) {
+                let mut line = R::ZERO;
+                for (jx, &wx) in wx.iter().enumerate().take(span(0, normal)) {
+                    line = line.saturating_add(wx.mul_rn(read([jx, jy, jz])));
+                }
+                plane = plane.saturating_add(wy.mul_rn(line));
+            }
+            block_sum = block_sum.saturating_add(wz.mul_rn(plane));
+        }
+        *sum = sum.saturating_add(block_sum);
     }
 }
 
@@ -573,7 +649,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         p: [R; 3],
         nrm: [R; 3],
     ) -> (R, [R; 3]) {
-        if let Some(sums) = self.projected_along::<R, GRADIENT>(p, nrm) {
+        if let Some(sums) = self.projected_along::<R, GRADIENT, CUBE>(p, nrm) {
             return sums.finish(nrm);
         }
         let half = R::from_ratio(1, 1);
@@ -842,16 +918,61 @@ mod tests {
         for first in [[-3, -2, 3], [0, 5, 7], [-40, 7, 1003]] {
             let band = Wavelet::new(0, &crate::wavelet::TILE3);
             assert!(
-                band.projected_axis::<f32, false>(first, &t, &support, 2)
+                band.projected_axis::<f32, false, CUBE>(first, &t, &support, 2)
                     .is_some()
             );
             let small = Wavelet::new(5, &TILE4).with_tiling(Tiling::Varied);
             assert!(
                 small
-                    .projected_axis::<f32, false>(first, &t, &support, 2)
+                    .projected_axis::<f32, false, CUBE>(first, &t, &support, 2)
                     .is_none()
             );
         }
+    }
+
+    /// Along an axis, the block sums written per axis permutation (`PERMUTED`: x86-64 and
+    /// AArch64) and through flat index parts (the other targets) are the same, bit for bit:
+    /// values and gradients, along each axis with either sign, every tiling, in f32, f64 and
+    /// I16F16, over the default tile, the quantized one and a tile whose side is not a power
+    /// of two.
+    #[test]
+    fn permuted_block_sums_are_the_flat_ones() {
+        fn same<R: Real, T: TileData<3>>(band: &Wavelet<'_, T>, p: [R; 3], n: [R; 3]) -> bool {
+            let bits = |(v, g): (R, [R; 3])| [v, g[0], g[1], g[2]].map(|x| x.to_f64().to_bits());
+            let permuted = band.projected_along::<R, true, true>(p, n);
+            let flat = band.projected_along::<R, true, false>(p, n);
+            match (permuted, flat) {
+                (Some(a), Some(b)) => bits(a.finish(n)) == bits(b.finish(n)),
+                (a, b) => a.is_none() && b.is_none(),
+            }
+        }
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut summed = 0;
+        for tiling in [Tiling::Blended, Tiling::Varied, Tiling::Periodic] {
+            let bands = (
+                Wavelet::new(1, &crate::wavelet::TILE3).with_tiling(tiling),
+                Wavelet::new(2, &TILE12).with_tiling(tiling),
+                Wavelet::new(3, &crate::wavelet::TILE3_I16).with_tiling(tiling),
+            );
+            for i in 0..600 {
+                let axis = i % 3;
+                let n: [f32; 3] = core::array::from_fn(|a| {
+                    if a == axis {
+                        [1.0, -1.0][i / 3 % 2]
+                    } else {
+                        0.0
+                    }
+                });
+                let p: [f32; 3] = core::array::from_fn(|_| rng.uniform(-300.0, 300.0));
+                let (pd, nd) = (p.map(f64::from), n.map(f64::from));
+                let (pq, nq) = (p.map(I16F16::from_num), n.map(I16F16::from_num));
+                assert!(same(&bands.0, p, n) && same(&bands.0, pd, nd) && same(&bands.0, pq, nq));
+                assert!(same(&bands.1, p, n) && same(&bands.2, p, n) && same(&bands.2, pq, nq));
+                summed += usize::from(bands.0.projected_along::<f32, false, true>(p, n).is_some());
+            }
+        }
+        // The block sums, not the window, took (nearly) every point.
+        assert!(summed > 1700, "{summed}");
     }
 
     /// Tiles of 4 and 6 with varied tiling reach 3 blocks along an axis: each keeps its own
