@@ -54,8 +54,10 @@
 //! coefficients in one block, 2D is about as fast as 3D Perlin and 3D about twice as slow; the
 //! default [`Tiling::Blended`] reads both blocks around a border in its blend zone (8 of
 //! every 64 coefficients per axis in 2D, 8 of 32 in 3D), so a sample whose coefficients reach
-//! a zone costs several times more. Figures per machine and
-//! tiling are in `bench/README.md`.
+//! a zone costs several times more. A band projected along an axis costs about twice a 3D
+//! band, as Cook & DeRose found projection to ("approximately doubles the cost", §5.2); along
+//! an oblique normal, whose basis is not a product of per-axis B-splines, about 16 times.
+//! Figures per machine and tiling are in `bench/README.md`.
 
 mod band;
 #[cfg(test)]

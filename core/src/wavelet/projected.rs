@@ -636,14 +636,16 @@ impl<R: Real, const GRADIENT: bool> Sums<R, GRADIENT> {
 }
 
 impl<T: TileData<3>> Wavelet<'_, T> {
-    /// [`projected`](Self::projected) through a [`Window`], visiting only the coefficients
-    /// where the basis can be non-zero. Along an axis (two components of the normal 0) each
-    /// `t_a` depends on its own offset only (across the normal `t_a = 3/2 − d_a`, along it
-    /// `3/2 − d_a + n_a (n_a d_a)/2`: the other terms of `n·d` are zeros), so the B-splines
-    /// are computed per axis and the loops run over the product of their supports; along
-    /// another normal, each row is clipped by [`Oblique`]. The same operations in the same
-    /// order as the reference (`compact.rs`) for every coefficient that is summed, so the
-    /// same values, bit for bit.
+    /// [`projected`](Self::projected), visiting only the coefficients where the basis can be
+    /// non-zero. Along an axis (two components of the normal 0) each `t_a` depends on its own
+    /// offset only (across the normal `t_a = 3/2 − d_a`, along it `3/2 − d_a + n_a (n_a d_a)/2`:
+    /// the other terms of `n·d` are zeros), so the B-splines are computed per axis and the
+    /// sum runs block by block over the product of their supports
+    /// ([`projected_along`](Self::projected_along): within rounding of the reference); along
+    /// another normal, and for the windows the block sums do not take, through a [`Window`],
+    /// each row clipped by [`Oblique`]: the same operations in the same order as the
+    /// reference (`compact.rs`) for every coefficient that is summed, so the same values, bit
+    /// for bit.
     pub(crate) fn projected_fast<R: Real, const GRADIENT: bool>(
         &self,
         p: [R; 3],
