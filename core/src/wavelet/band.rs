@@ -1043,9 +1043,10 @@ impl<T> Wavelet<'_, T> {
 
 /// Whether a 3D point sample reads each block as a [`TileData::cube`] summed by
 /// [`Wavelet::add_cube`] (x86-64 and AArch64), rather than coefficient by coefficient through
-/// flat indices ([`Wavelet::add_block`]): the same values in the same order, so the same bits.
-/// Not on the firmware cores and wasm, whose code size the six copies (one per axis
-/// permutation) would cost.
+/// flat indices ([`Wavelet::add_block`]), and a band projected along an axis sums each block
+/// by a copy per axis permutation (`permuted_sums` in `projected.rs`): the same values in the
+/// same order, so the same bits. Not on the firmware cores and wasm, whose code size the six
+/// copies (one per axis permutation) would cost.
 pub(crate) const CUBE: bool = cfg!(any(target_arch = "x86_64", target_arch = "aarch64"));
 
 impl<T> Wavelet<'_, T> {
