@@ -746,6 +746,17 @@ impl<R: Real> Oblique<R> {
     fn range(&self, t0: [R; 3]) -> Range<usize> {
         let three = R::from_i32(3);
         let margin = R::from_ratio(1, 4);
+        let outside = |lo: R, hi: R| {
+            (lo <= -margin && hi <= -margin) || (lo >= three + margin && hi >= three + margin)
+        };
+        // The whole row first (cheaper than clipping it along x): t_y or t_z past an end at
+        // both of the row's ends.
+        let last = R::from_i32(self.count as i32 - 1);
+        for (&t, &slope) in t0.iter().zip(&self.slopes).skip(1) {
+            if outside(t, t + slope.mul_rn(last)) {
+                return 0..0;
+            }
+        }
         // Where t_x crosses 0 and 3 (σ_x > 0); the integers strictly between, widened by 1/16.
         let first = ((R::ZERO - t0[0]).mul_rn(self.inverse) - margin).split().0 + 1;
         let end = ((three - t0[0]).mul_rn(self.inverse) + margin).split().0 + 1;
@@ -756,9 +767,7 @@ impl<R: Real> Oblique<R> {
         let ends = [R::from_i32(first), R::from_i32(end - 1)];
         for (&t, &slope) in t0.iter().zip(&self.slopes).skip(1) {
             let [lo, hi] = ends.map(|jx| t + slope.mul_rn(jx));
-            let below = lo <= -margin && hi <= -margin;
-            let above = lo >= three + margin && hi >= three + margin;
-            if below || above {
+            if outside(lo, hi) {
                 return 0..0;
             }
         }
