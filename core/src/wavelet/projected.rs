@@ -429,14 +429,14 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 core::array::from_fn(|a| &(if set == a + 1 { dw } else { w })[slot(a)][a])
             };
             if PERMUTED {
-                let at = (&mut sums, weights, &place, local, normal);
+                let (s, p) = (&mut sums, &place);
                 match place.permutation() {
-                    0 => self.permuted_sums::<R, GRADIENT, 0>(at),
-                    1 => self.permuted_sums::<R, GRADIENT, 1>(at),
-                    2 => self.permuted_sums::<R, GRADIENT, 2>(at),
-                    3 => self.permuted_sums::<R, GRADIENT, 3>(at),
-                    4 => self.permuted_sums::<R, GRADIENT, 4>(at),
-                    _ => self.permuted_sums::<R, GRADIENT, 5>(at),
+                    0 => self.permuted_sums::<R, GRADIENT, 0>(s, weights, p, local, normal),
+                    1 => self.permuted_sums::<R, GRADIENT, 1>(s, weights, p, local, normal),
+                    2 => self.permuted_sums::<R, GRADIENT, 2>(s, weights, p, local, normal),
+                    3 => self.permuted_sums::<R, GRADIENT, 3>(s, weights, p, local, normal),
+                    4 => self.permuted_sums::<R, GRADIENT, 4>(s, weights, p, local, normal),
+                    _ => self.permuted_sums::<R, GRADIENT, 5>(s, weights, p, local, normal),
                 }
                 continue;
             }
@@ -469,12 +469,11 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     #[inline(always)]
     fn permuted_sums<'w, R: Real, const GRADIENT: bool, const P: usize>(
         &self,
-        (sums, weights, place, local, normal): PermutedSums<
-            '_,
-            'w,
-            R,
-            impl Fn(usize) -> [&'w [R; SPAN]; 3],
-        >,
+        sums: &mut [R; 4],
+        weights: impl Fn(usize) -> [&'w [R; SPAN]; 3],
+        place: &Placement<3>,
+        local: [usize; 3],
+        normal: usize,
     ) {
         let (n, tile) = (T::SIZE, self.tile());
         let unit = tile.unit::<R>();
@@ -496,10 +495,6 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         });
     }
 }
-
-/// What [`Wavelet::permuted_sums`] takes: the sums, each set's weights (see [`block_sums`]), the
-/// block's placement, each axis's first local index, and the normal's axis.
-type PermutedSums<'s, 'w, R, W> = (&'s mut [R; 4], W, &'s Placement<3>, [usize; 3], usize);
 
 /// One block's part of [`Wavelet::axis_blocks`]' sums: for each sum (the value, then with
 /// `GRADIENT` each `G_a`) with its weights (`weights(set)`: per axis, the block's slot's
