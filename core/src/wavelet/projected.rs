@@ -36,18 +36,13 @@ use super::window::{WIDTH, Window};
 #[inline]
 pub(crate) fn bspline<R: Real>(t: R) -> R {
     let half = R::from_ratio(1, 1);
-    let three = R::from_i32(3);
-    if t <= R::ZERO || t >= three {
-        R::ZERO
-    } else if t < R::ONE {
-        t.mul_rn(t).mul_rn(half)
-    } else if t < R::from_i32(2) {
-        let u = t - R::from_ratio(3, 1);
-        R::from_ratio(3, 2) - u.mul_rn(u)
-    } else {
-        let u = three - t;
-        u.mul_rn(u).mul_rn(half)
-    }
+    let v = R::from_i32(3) - t;
+    let s = if v < t { v } else { t };
+    let u = t - R::from_ratio(3, 1);
+    let outer = s.mul_rn(s).mul_rn(half);
+    let middle = R::from_ratio(3, 2) - u.mul_rn(u);
+    let piece = if s < R::ONE { outer } else { middle };
+    if s <= R::ZERO { R::ZERO } else { piece }
 }
 
 /// [`bspline`]'s derivative: `t`, `3 − 2t`, `t − 3` on its three pieces, 0 outside `(0, 3)`

@@ -144,11 +144,10 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
             let i = index(self, m);
             let mut c: R = self.wavelet.tile().flat(i);
             if zones != 0 {
+                // An axis outside a zone weighs 1 (`blend`'s default), exactly: no branch per
+                // axis.
                 for (a, &k) in k.iter().enumerate() {
-                    let along = &self.along[a][k % WIDTH];
-                    if along.zone {
-                        c = c.mul_fraction(along.blend[m >> a & 1]);
-                    }
+                    c = c.mul_fraction(self.along[a][k % WIDTH].blend[m >> a & 1]);
                 }
             }
             value = value.saturating_add(c);
@@ -170,17 +169,13 @@ impl<'w, 't, T: TileData<D>, R: Real, const D: usize> Window<'w, 't, T, R, D> {
         }));
         for a in 0..D {
             let axis = place.axis(a, n);
-            let slot = block >> a & 1;
-            let along = self.along[a].iter().take(self.count[a]);
-            for (o, along) in self.offsets[block % 8][a].iter_mut().zip(along) {
-                // The block reaches the coefficient if it is the coefficient's first block, or
-                // the next one in a zone; m is how many blocks past the first it is.
-                let Some(m) = slot.checked_sub(along.slot) else {
-                    continue;
-                };
-                if m == 0 || (m == 1 && along.zone) {
-                    *o = axis.offset(along.local - m * n, n) as u32;
-                }
+            // The coefficient's local index in this block plus a multiple of n: its local
+            // index in its first block plus n, less n per slot this block lies past it. Every
+            // offset is filled; those the block does not reach are never read (`coefficient`
+            // reads a coefficient's first block and, in a zone, the next).
+            let back = (block >> a & 1) * n;
+            for (o, along) in self.offsets[block % 8][a].iter_mut().zip(&self.along[a]) {
+                *o = axis.offset(along.local + (along.slot + 1) * n - back, n) as u32;
             }
         }
         self.ready |= 1 << block;
