@@ -33,6 +33,11 @@ use super::window::{WIDTH, Window};
 
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
 /// `(3 − t)²/2`, 0 elsewhere.
+///
+/// The two outer pieces are one, `s²/2` with `s = min(t, 3 − t)` the distance to the nearer
+/// end (`3 − t` is exact where it is the smaller, and at `t = 2` both pieces give ½), so a
+/// sample picks between two pieces with selects rather than branching three ways: the
+/// projected basis's `t` follow no pattern a branch predictor learns.
 #[inline]
 pub(crate) fn bspline<R: Real>(t: R) -> R {
     let half = R::from_ratio(1, 1);
