@@ -99,6 +99,15 @@ pub fn unit_normal<R: Real>(n: [R; 3]) -> [R; 3] {
     if largest == R::ZERO || largest > R::MAX {
         return along_z;
     }
+    // Along an axis, the divisions below give the two zeros as they are and the third
+    // component's sign, exactly: skip them (projections onto planes of the axes are common).
+    if n.iter().filter(|&&x| x == R::ZERO).count() == 2 {
+        return n.map(|x| match x {
+            x if x == R::ZERO => x,
+            x if x > R::ZERO => R::ONE,
+            _ => R::NEG_ONE,
+        });
+    }
     // Each component in [−1, 1], the largest ±1 exactly: the length is in [1, √3].
     let scaled = n.map(|x| x.div(largest));
     let len2 = scaled.iter().fold(R::ZERO, |acc, x| acc + x.mul_rn(*x));
@@ -912,6 +921,40 @@ mod tests {
             }
         }
         checked
+    }
+
+    /// `unit_normal`'s axis shortcut gives what its divisions give, bit for bit: zeros with
+    /// their signs, the third component's sign.
+    #[test]
+    fn axis_normals_are_the_divided_ones() {
+        fn divided<R: Real>(n: [R; 3]) -> [R; 3] {
+            let largest = n
+                .iter()
+                .fold(R::ZERO, |m, x| if x.abs() > m { x.abs() } else { m });
+            let scaled = n.map(|x| x.div(largest));
+            let len = scaled
+                .iter()
+                .fold(R::ZERO, |acc, x| acc + x.mul_rn(*x))
+                .sqrt();
+            scaled.map(|x| x.div(len).clamp_to(-R::ONE, R::ONE))
+        }
+        for c in [1.0f32, -1.0, 5.0, -3.0e-30, 1.0e-45, 3.0e38, -0.25] {
+            for axis in 0..3 {
+                for zero in [0.0f32, -0.0] {
+                    let mut n = [zero; 3];
+                    n[axis] = c;
+                    let bits = |v: [f32; 3]| v.map(f32::to_bits);
+                    assert_eq!(bits(unit_normal(n)), bits(divided(n)), "{n:?}");
+                    let d = n.map(f64::from);
+                    let bits = |v: [f64; 3]| v.map(f64::to_bits);
+                    assert_eq!(bits(unit_normal(d)), bits(divided(d)), "{n:?}");
+                    let q = n.map(I16F16::saturating_from_num);
+                    if q[axis] != I16F16::ZERO {
+                        assert_eq!(unit_normal(q), divided(q), "{n:?}");
+                    }
+                }
+            }
+        }
     }
 
     #[test]
