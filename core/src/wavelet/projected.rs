@@ -433,7 +433,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         // increasing order, each with its placement, all found before any is summed: with
         // `PERMUTED` each block's copy is chosen by its permutation, a jump no predictor
         // foresees, whose misprediction costs least when the target is known as the jump is
-        // reached (3D band points the same, `Wavelet::add_cube`).
+        // reached (3D band points the same, `Wavelet::add_cubes`).
         let slots = (0..3).fold(0, |m, a| m | usize::from(two[a]) << a);
         let mut places = [(0, Placement::UNSHIFTED); 8];
         let (mut block, mut count) = (0, 0);

@@ -37,7 +37,8 @@ struct Along<R> {
     local: usize,
     /// Whether the next block reaches it too (a blend zone).
     zone: bool,
-    /// In a zone, its blend weights in the first block and the next.
+    /// In a zone, its blend weights in the first block and the next; outside one, 1 and 1
+    /// (multiplied as they are: exact).
     blend: [R; 2],
 }
 
@@ -58,8 +59,8 @@ pub(crate) struct Window<'w, 't, T, R, const D: usize> {
     /// The blocks (numbered by their slots, bit `a` along axis `a`) whose `offsets` are filled.
     ready: u8,
     /// Per block, axis and offset `k_a`: the part of the tile's flat index that the
-    /// coefficient at offset `k_a` along axis `a` contributes when read in that block (where
-    /// the block reaches it).
+    /// coefficient at offset `k_a` along axis `a` contributes when read in that block
+    /// (filled for every offset; read only where the block reaches it).
     offsets: [[[u32; WIDTH]; D]; 8],
 }
 
