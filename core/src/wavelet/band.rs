@@ -65,6 +65,16 @@ pub trait TileData<const D: usize> {
     }
     /// The largest `|coefficient|`.
     fn max_abs(&self) -> f32;
+    /// The coefficients along x at tile indices `y`, `z` (a 3D tile, each below `SIZE`), if
+    /// the storage holds them as a run of `SIZE` `f32`s: lets a band projected along an axis
+    /// read runs of coefficients several at a time. The run must hold the values
+    /// [`get`](Self::get) reads at `[0..SIZE, y, z]`; coefficients past the end of a shorter
+    /// run read as 0. The default: `None` (read one by one).
+    #[inline]
+    fn row(&self, y: usize, z: usize) -> Option<&[f32]> {
+        let _ = (y, z);
+        None
+    }
     /// The 3 × 3 × 3 coefficients of a 3D tile at indices `(x[i], y[j], z[k])` (each below
     /// `SIZE`), as `[k][j][i]`, given `unit == self.unit()`: one block's reads in a point sample
     /// of a 3D band, which storage kept as nested arrays can make with one addition per line
@@ -101,6 +111,11 @@ impl<const N: usize> TileData<2> for Tile2<N> {
 
 impl<const N: usize> TileData<3> for Tile3<N> {
     const SIZE: usize = N;
+    #[inline]
+    fn row(&self, y: usize, z: usize) -> Option<&[f32]> {
+        let plane = self.data.get(within(z, N))?;
+        Some(plane.get(within(y, N))?.as_slice())
+    }
     #[inline]
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
         self.flat(x + N * (y + N * z))

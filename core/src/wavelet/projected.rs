@@ -508,6 +508,50 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 *c = axis.coordinate(local[a] + i, n);
             }
         }
+        // The output axis that reads tile x: its offsets lie side by side in the tile's rows.
+        let star = if perm[1] == 0 {
+            1
+        } else if perm[2] == 0 {
+            2
+        } else {
+            0
+        };
+        if star != 0 && tile.row(0, 0).is_some() {
+            let len = span(star, normal);
+            let (c0, c1, cl) = (
+                coordinate[star][0],
+                coordinate[star][1],
+                coordinate[star][(len - 1) % SPAN],
+            );
+            let window = if len == 3 { 4 } else { 6 };
+            let rows = |j: [usize; 2]| {
+                let mut k = [0usize; 3];
+                let mut o = 0;
+                for (a, &target) in perm.iter().enumerate() {
+                    if a != star {
+                        k[target] = coordinate[a][j[o] % SPAN];
+                        o += 1;
+                    }
+                }
+                tile.row(k[1], k[2]).unwrap_or(&[])
+            };
+            if c1 == c0 + 1 && cl == c0 + len - 1 && c0 + window <= n {
+                if len == 3 {
+                    row_sums::<R, GRADIENT, 4, false>(sums, &weights, normal, star, c0, rows);
+                } else {
+                    row_sums::<R, GRADIENT, 8, false>(sums, &weights, normal, star, c0, rows);
+                }
+                return;
+            }
+            if c0 == c1 + 1 && c0 == cl + len - 1 && cl + window <= n {
+                if len == 3 {
+                    row_sums::<R, GRADIENT, 4, true>(sums, &weights, normal, star, cl, rows);
+                } else {
+                    row_sums::<R, GRADIENT, 8, true>(sums, &weights, normal, star, cl, rows);
+                }
+                return;
+            }
+        }
         block_sums::<R, GRADIENT>(sums, weights, normal, |j| {
             let mut k = [0usize; 3];
             for (a, &target) in perm.iter().enumerate() {
@@ -547,6 +591,83 @@ fn block_sums<'w, R: Real + 'w, const GRADIENT: bool>(
                 plane = plane.saturating_add(wy.mul_rn(line));
             }
             block_sum = block_sum.saturating_add(wz.mul_rn(plane));
+        }
+        *sum = sum.saturating_add(block_sum);
+    }
+}
+
+/// [`block_sums`] for a block whose output axis `star` (y or z) reads tile x: the coefficients
+/// at its offsets, adjacent in the tile's rows (`rows([j, j'])`: the row at the other two
+/// axes' offsets, in output order), read `W` at a time from `lo` (`W = 4`: the 3 offsets
+/// across the normal; `W = 8`: the normal's 6, as two overlapping runs of 4 from `lo` and
+/// `lo + 2`), backwards with `FLIP`. Each lane sums as `block_sums` does; the sums over
+/// `star`'s offsets walk the lanes in its order: the same operations in the same order.
+#[inline(always)]
+fn row_sums<'w, 'r, R: Real + 'w, const GRADIENT: bool, const W: usize, const FLIP: bool>(
+    sums: &mut [R; 4],
+    weights: &impl Fn(usize) -> [&'w [R; SPAN]; 3],
+    normal: usize,
+    star: usize,
+    lo: usize,
+    rows: impl Fn([usize; 2]) -> &'r [f32],
+) {
+    let len = if W == 4 { 3 } else { 6 };
+    let load = |j: [usize; 2]| -> [R; W] {
+        let row = rows(j);
+        let mut v = [R::ZERO; W];
+        for (part, start) in v.chunks_exact_mut(4).zip([lo, lo + 2]) {
+            if let Some(run) = row.get(start..start + 4) {
+                for (v, &c) in part.iter_mut().zip(run) {
+                    *v = R::from_f32(c);
+                }
+            }
+        }
+        v
+    };
+    // The lane of the coefficient at offset j along `star`.
+    let lane = |j: usize| {
+        let p = if FLIP { len - 1 - j } else { j };
+        if p < 4 { p } else { p + 2 }
+    };
+    for (set, sum) in sums
+        .iter_mut()
+        .enumerate()
+        .take(if GRADIENT { 4 } else { 1 })
+    {
+        let [wx, wy, wz] = weights(set);
+        let mut block_sum = R::ZERO;
+        if star == 2 {
+            let mut plane = [R::ZERO; W];
+            for (jy, &wy) in wy.iter().enumerate().take(span(1, normal)) {
+                let mut line = [R::ZERO; W];
+                for (jx, &wx) in wx.iter().enumerate().take(span(0, normal)) {
+                    let c = load([jx, jy]);
+                    for (l, c) in line.iter_mut().zip(c) {
+                        *l = l.saturating_add(wx.mul_rn(c));
+                    }
+                }
+                for (p, l) in plane.iter_mut().zip(line) {
+                    *p = p.saturating_add(wy.mul_rn(l));
+                }
+            }
+            for (jz, &wz) in wz.iter().enumerate().take(len) {
+                block_sum = block_sum.saturating_add(wz.mul_rn(plane[lane(jz) % W]));
+            }
+        } else {
+            for (jz, &wz) in wz.iter().enumerate().take(span(2, normal)) {
+                let mut line = [R::ZERO; W];
+                for (jx, &wx) in wx.iter().enumerate().take(span(0, normal)) {
+                    let c = load([jx, jz]);
+                    for (l, c) in line.iter_mut().zip(c) {
+                        *l = l.saturating_add(wx.mul_rn(c));
+                    }
+                }
+                let mut plane = R::ZERO;
+                for (jy, &wy) in wy.iter().enumerate().take(len) {
+                    plane = plane.saturating_add(wy.mul_rn(line[lane(jy) % W]));
+                }
+                block_sum = block_sum.saturating_add(wz.mul_rn(plane));
+            }
         }
         *sum = sum.saturating_add(block_sum);
     }
