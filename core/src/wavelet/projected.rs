@@ -516,7 +516,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         } else {
             0
         };
-        if star != 0 && tile.row(0, 0).is_some() {
+        if tile.row(0, 0).is_some() {
             let len = span(star, normal);
             let (c0, c1, cl) = (
                 coordinate[star][0],
@@ -596,12 +596,13 @@ fn block_sums<'w, R: Real + 'w, const GRADIENT: bool>(
     }
 }
 
-/// [`block_sums`] for a block whose output axis `star` (y or z) reads tile x: the coefficients
-/// at its offsets, adjacent in the tile's rows (`rows([j, j'])`: the row at the other two
-/// axes' offsets, in output order), read `W` at a time from `lo` (`W = 4`: the 3 offsets
-/// across the normal; `W = 8`: the normal's 6, as two overlapping runs of 4 from `lo` and
-/// `lo + 2`), backwards with `FLIP`. Each lane sums as `block_sums` does; the sums over
-/// `star`'s offsets walk the lanes in its order: the same operations in the same order.
+/// [`block_sums`] for a block whose output axis `star` reads tile x: the coefficients at its
+/// offsets, adjacent in the tile's rows (`rows([j, j'])`: the row at the other two axes'
+/// offsets, in output order), read `W` at a time from `lo` (`W = 4`: the 3 offsets across the
+/// normal; `W = 8`: the normal's 6, as two overlapping runs of 4 from `lo` and `lo + 2`),
+/// backwards with `FLIP`. Where `star` is y or z, each lane sums as `block_sums` does and the
+/// sums over `star`'s offsets walk the lanes in its order; where it is x, each line sums its
+/// run's lanes in order: the same operations in the same order either way.
 #[inline(always)]
 fn row_sums<'w, 'r, R: Real + 'w, const GRADIENT: bool, const W: usize, const FLIP: bool>(
     sums: &mut [R; 4],
@@ -636,7 +637,20 @@ fn row_sums<'w, 'r, R: Real + 'w, const GRADIENT: bool, const W: usize, const FL
     {
         let [wx, wy, wz] = weights(set);
         let mut block_sum = R::ZERO;
-        if star == 2 {
+        if star == 0 {
+            for (jz, &wz) in wz.iter().enumerate().take(span(2, normal)) {
+                let mut plane = R::ZERO;
+                for (jy, &wy) in wy.iter().enumerate().take(span(1, normal)) {
+                    let c = load([jy, jz]);
+                    let mut line = R::ZERO;
+                    for (jx, &wx) in wx.iter().enumerate().take(len) {
+                        line = line.saturating_add(wx.mul_rn(c[lane(jx) % W]));
+                    }
+                    plane = plane.saturating_add(wy.mul_rn(line));
+                }
+                block_sum = block_sum.saturating_add(wz.mul_rn(plane));
+            }
+        } else if star == 2 {
             let mut plane = [R::ZERO; W];
             for (jy, &wy) in wy.iter().enumerate().take(span(1, normal)) {
                 let mut line = [R::ZERO; W];
