@@ -535,19 +535,25 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
                 tile.row(k[1], k[2]).unwrap_or(&[])
             };
-            if c1 == c0 + 1 && cl == c0 + len - 1 && c0 + window <= n {
-                if len == 3 {
-                    row_sums::<R, GRADIENT, 4, false>(sums, &weights, normal, star, c0, rows);
-                } else {
-                    row_sums::<R, GRADIENT, 8, false>(sums, &weights, normal, star, c0, rows);
-                }
-                return;
-            }
-            if c0 == c1 + 1 && c0 == cl + len - 1 && cl + window <= n {
-                if len == 3 {
-                    row_sums::<R, GRADIENT, 4, true>(sums, &weights, normal, star, cl, rows);
-                } else {
-                    row_sums::<R, GRADIENT, 8, true>(sums, &weights, normal, star, cl, rows);
+            // The run's lowest tile index, and whether the offsets walk it backwards.
+            let run = if c1 == c0 + 1 && cl == c0 + len - 1 && c0 + window <= n {
+                Some((c0, false))
+            } else if c0 == c1 + 1 && c0 == cl + len - 1 && cl + window <= n {
+                Some((cl, true))
+            } else {
+                None
+            };
+            if let Some((lo, flip)) = run {
+                let (w, s) = (&weights, sums);
+                match (len == 3, flip) {
+                    (true, false) => {
+                        row_sums::<R, GRADIENT, 4, false>(s, w, normal, star, lo, rows)
+                    }
+                    (false, false) => {
+                        row_sums::<R, GRADIENT, 8, false>(s, w, normal, star, lo, rows)
+                    }
+                    (true, true) => row_sums::<R, GRADIENT, 4, true>(s, w, normal, star, lo, rows),
+                    (false, true) => row_sums::<R, GRADIENT, 8, true>(s, w, normal, star, lo, rows),
                 }
                 return;
             }
