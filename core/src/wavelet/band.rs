@@ -856,6 +856,35 @@ const ZONE: [[i32; 16]; 2] = {
     zone
 };
 
+/// [`ZONE`] for the supports of a projected band, which cross from one block into the next:
+/// `CROSSING[b][side][z + 6]`, with `b` 1 for the blended tiling (`h = BLEND`) and 0 for
+/// the others (`h = 0`), is the weight in the block the zone leaves (`side` 0) or leads into
+/// (1) of the coefficient `z` places past the zone's start (local index `n − h`), for `z` in
+/// `[−6, 2h + 6)`: a support of up to 6 offsets starts at most 5 places before the zone and
+/// ends at most 5 past it. [`blend_weight`]'s values there (a unit test compares them),
+/// without its branches. Padded to 32 entries, so that an index masked to 5 bits is in range.
+pub(crate) const CROSSING: [[[i32; 32]; 2]; 2] = {
+    let mut crossing = [[[0; 32]; 2]; 2];
+    let mut b = 0;
+    while b < 2 {
+        let h = b * BLEND;
+        let mut i = 0;
+        while i < 32 {
+            let z = i as isize - 6;
+            (crossing[b][0][i], crossing[b][1][i]) = if z < 0 {
+                (1 << 16, 0)
+            } else if z < 2 * h as isize {
+                (RAMP[2 * BLEND - 1 - z as usize], RAMP[z as usize])
+            } else {
+                (0, 1 << 16)
+            };
+            i += 1;
+        }
+        b += 1;
+    }
+    crossing
+};
+
 /// Multiplies the weights of the three coefficients of one axis (every lane's) by their blend
 /// weights in the block on `side` of a zone (0: the block it leaves, 1: the one it leads
 /// into), the first coefficient `at − 2` places past the zone's start ([`ZONE`]; `at` in

@@ -27,7 +27,7 @@ use crate::{ProjectedNoise, Real};
 use core::ops::Range;
 
 use super::band::{
-    CUBE, PERMUTATIONS3, Placement, TileData, Wavelet, blend_weight, first_block, within,
+    CROSSING, CUBE, PERMUTATIONS3, Placement, TileData, Wavelet, first_block, within,
 };
 use super::window::{WIDTH, Window};
 
@@ -372,16 +372,33 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 return None;
             }
             two[a] = l0 + len > 2 * n - h;
-            // The next slot's weights only where its block reaches the support.
-            let slots = 1 + usize::from(two[a]);
-            for i in 0..len {
-                let t = t[a][(start + i) % WIDTH];
-                let (b, db) = (bspline(t), bspline_derivative(t));
-                for s in 0..slots {
-                    let omega = blend_weight::<R>(l0 + i - s * n, n, h);
-                    w[s][a][i] = b.mul_rn(omega);
+            if two[a] {
+                // The support crosses the zone where the first block fades into the next:
+                // both blocks' weights from the table, the first offset `at − 6` places
+                // past the zone's start (`l0 > 2n − h − 6`: the support reaches it).
+                let (zone, at) = (
+                    &CROSSING[usize::from(h > 0)],
+                    (l0 + h + 6).wrapping_sub(2 * n),
+                );
+                for i in 0..len {
+                    let t = t[a][(start + i) % WIDTH];
+                    let (b, db) = (bspline(t), bspline_derivative(t));
+                    for (s, zone) in zone.iter().enumerate() {
+                        let omega = R::from_ratio(zone[(at + i) & 31], 16);
+                        w[s][a][i] = b.mul_rn(omega);
+                        if GRADIENT {
+                            dw[s][a][i] = db.mul_rn(omega);
+                        }
+                    }
+                }
+            } else {
+                // Within the first block's interior (`l0 ≥ n + h`, `l0 + len ≤ 2n − h`):
+                // every blend weight 1, whose products are the B-splines themselves.
+                for i in 0..len {
+                    let t = t[a][(start + i) % WIDTH];
+                    w[0][a][i] = bspline(t);
                     if GRADIENT {
-                        dw[s][a][i] = db.mul_rn(omega);
+                        dw[0][a][i] = bspline_derivative(t);
                     }
                 }
             }
@@ -944,6 +961,44 @@ mod tests {
     static TILE6: Tile3<6> = Tile3::generate(4);
     static TILE12: Tile3<12> = Tile3::generate(5);
     static TILE16: Tile3<16> = Tile3::generate(6);
+
+    /// The set-up's weights, from `CROSSING` where a support crosses into the next block and 1
+    /// where it does not, are `blend_weight`'s, for every first local index `first_block`
+    /// gives, every support length up to 6, blended and not, several tile sizes.
+    #[test]
+    fn crossing_weights_are_blend_weights() {
+        use crate::wavelet::band::{BLEND, blend_weight};
+        for n in [4, 6, 11, 12, 16, 32] {
+            for h in [0, BLEND] {
+                if h > 0 && n < 2 * BLEND + 3 {
+                    continue; // such tiles are not blended (`half_width`)
+                }
+                for l0 in n + h..2 * n + h {
+                    for len in 1..=6 {
+                        if l0 + len > 3 * n - h {
+                            continue; // the window's case: a third block
+                        }
+                        for i in 0..len {
+                            let reference =
+                                |s: usize| blend_weight::<f32>(l0 + i - s * n, n, h).to_bits();
+                            let weights = if l0 + len > 2 * n - h {
+                                let at = (l0 + h + 6).wrapping_sub(2 * n);
+                                CROSSING[usize::from(h > 0)]
+                                    .map(|zone| f32::from_ratio(zone[(at + i) & 31], 16).to_bits())
+                            } else {
+                                [1.0f32.to_bits(), 0.0f32.to_bits()]
+                            };
+                            assert_eq!(
+                                weights,
+                                [reference(0), reference(1)],
+                                "n {n} h {h} l0 {l0} {i}/{len}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     /// A small xorshift generator: uniform in [lo, hi).
     struct Rng(u64);
