@@ -838,19 +838,13 @@ fn blended_placement<const D: usize>(
 /// start (`z` in `[−2, 2·BLEND + 2)`: 1 before the zone, the falling ramp, 0 past it), and
 /// `ZONE[1][z + 2]` its weight in the block the zone leads into (0, the rising ramp, 1):
 /// [`blend_weight`]'s values at those places (a unit test compares them), read without its
-/// four-way branch. Padded to 16 entries, so that an index masked to 4 bits is in range.
+/// four-way branch. Padded to 16 entries, so that an index masked to 4 bits is in range:
+/// [`CROSSING`]'s blended weights from `z = −2`.
 const ZONE: [[i32; 16]; 2] = {
     let mut zone = [[0; 16]; 2];
     let mut i = 0;
-    while i < 2 * BLEND + 4 {
-        let z = i as isize - 2;
-        (zone[0][i], zone[1][i]) = if z < 0 {
-            (1 << 16, 0)
-        } else if z < 2 * BLEND as isize {
-            (RAMP[2 * BLEND - 1 - z as usize], RAMP[z as usize])
-        } else {
-            (0, 1 << 16)
-        };
+    while i < 16 {
+        (zone[0][i], zone[1][i]) = (CROSSING[1][0][i + 4], CROSSING[1][1][i + 4]);
         i += 1;
     }
     zone
