@@ -844,19 +844,20 @@ const ZONE: [[i32; 16]; 2] = {
     let mut zone = [[0; 16]; 2];
     let mut i = 0;
     while i < 16 {
-        (zone[0][i], zone[1][i]) = (CROSSING[1][0][i + 4], CROSSING[1][1][i + 4]);
+        (zone[0][i], zone[1][i]) = (CROSSING[1][0][i + 6], CROSSING[1][1][i + 6]);
         i += 1;
     }
     zone
 };
 
-/// [`ZONE`] for the supports of a projected band, which cross from one block into the next:
-/// `CROSSING[b][side][z + 6]`, with `b` 1 for the blended tiling (`h = BLEND`) and 0 for
-/// the others (`h = 0`), is the weight in the block the zone leaves (`side` 0) or leads into
-/// (1) of the coefficient `z` places past the zone's start (local index `n − h`), for `z` in
-/// `[−6, 2h + 6)`: a support of up to 6 offsets starts at most 5 places before the zone and
-/// ends at most 5 past it. [`blend_weight`]'s values there (a unit test compares them),
-/// without its branches. Padded to 32 entries, so that an index masked to 5 bits is in range.
+/// [`ZONE`] for the supports and windows of a projected band, which cross from one block into
+/// the next: `CROSSING[b][side][z + 8]`, with `b` 1 for the blended tiling (`h = BLEND`) and 0
+/// for the others (`h = 0`), is the weight in the block the zone leaves (`side` 0) or leads
+/// into (1) of the coefficient `z` places past the zone's start (local index `n − h`), for `z`
+/// in `[−8, 2h + 8)`: a run of up to 8 offsets that reaches the zone starts at most 7 places
+/// before it and ends at most 7 past it. [`blend_weight`]'s values there (a unit test compares
+/// them), without its branches. Padded to 32 entries, so that an index masked to 5 bits is in
+/// range.
 pub(crate) const CROSSING: [[[i32; 32]; 2]; 2] = {
     let mut crossing = [[[0; 32]; 2]; 2];
     let mut b = 0;
@@ -864,7 +865,7 @@ pub(crate) const CROSSING: [[[i32; 32]; 2]; 2] = {
         let h = b * BLEND;
         let mut i = 0;
         while i < 32 {
-            let z = i as isize - 6;
+            let z = i as isize - 8;
             (crossing[b][0][i], crossing[b][1][i]) = if z < 0 {
                 (1 << 16, 0)
             } else if z < 2 * h as isize {
