@@ -53,10 +53,11 @@ bash scripts/build-web.sh
 # settings and the warp control, to 205,000 for flow noise, to 210,000 for issue 20's
 # per-field messages, windowed spectrum and sphere view, to 216,000 for its batch path's
 # descriptions, to 217,000 for Gabor noise's harmonic per cell, to 221,000 for the projected
-# band's block sums along an axis; ARCHITECTURE.md).
+# band's block sums along an axis, to 231,000 for its row sums along oblique normals;
+# ARCHITECTURE.md).
 size=$(wc -c < web/pkg/bandnoise_wasm_bg.wasm)
-if [ "$size" -gt 221000 ]; then
-    echo "error: the demo's wasm module is $size bytes, over its budget of 221,000 (README, Browser)" >&2
+if [ "$size" -gt 231000 ]; then
+    echo "error: the demo's wasm module is $size bytes, over its budget of 231,000 (README, Browser)" >&2
     exit 1
 fi
 step "browser: the demo module's wasm-bindgen tests in Chromium"

@@ -15,12 +15,17 @@
 //! axis the basis is a product of per-axis B-splines over the 3 × 3 × 6 product of per-axis
 //! supports, and a blended coefficient a sum over blocks of per-axis blend weights, so the
 //! sample is summed block by block, each block's reads weighted separably, as a plain band is
-//! (`Wavelet::projected_axis`). Along an oblique normal, each row of the box is clipped to the
-//! support and each coefficient read through a `Window`, which resolves each axis and each
-//! tile block once per sample instead of once per coefficient. The tests hold both to a
-//! reference that visits the whole box and finds each coefficient on its own (`compact.rs`):
-//! the same values, bit for bit, along oblique normals, and within rounding (the sums' order
-//! differs) along an axis.
+//! (`Wavelet::projected_axis`). Along an oblique normal each basis argument is affine in the
+//! offsets, so the window is summed row by row: a row's arguments are its start plus a rise
+//! per lane, rows outside the support are skipped, the others clipped to it, their basis
+//! weights computed once and summed in each block that reaches the row
+//! (`Wavelet::projected_oblique`). Windows that reach three blocks along an axis (tiles
+//! narrower than the window and the blend zones) are summed coefficient by coefficient
+//! through a `Window`, which resolves each axis and each tile block once per sample. The tests
+//! hold all three to a reference that visits the whole box and finds each coefficient on its
+//! own (`compact.rs`): within rounding where the sums run block by block (their order
+//! differs, and along oblique normals the arguments are computed from their affine form),
+//! bit for bit through the `Window`.
 
 use crate::{ProjectedNoise, Real};
 
@@ -800,11 +805,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     /// offset only (across the normal `t_a = 3/2 − d_a`, along it `3/2 − d_a + n_a (n_a d_a)/2`:
     /// the other terms of `n·d` are zeros), so the B-splines are computed per axis and the
     /// sum runs block by block over the product of their supports
-    /// ([`projected_along`](Self::projected_along): within rounding of the reference); along
-    /// another normal, and for the windows the block sums do not take, through a [`Window`],
-    /// each row clipped by [`Oblique`]: the same operations in the same order as the
-    /// reference (`compact.rs`) for every coefficient that is summed, so the same values, bit
-    /// for bit.
+    /// ([`projected_along`](Self::projected_along)); along another normal, row by row and
+    /// block by block ([`projected_oblique`](Self::projected_oblique)); both within rounding
+    /// of the reference (`compact.rs`). The windows neither takes (a window reaching three
+    /// blocks along an axis) go through a [`Window`], each row clipped by [`Oblique`]: the
+    /// same operations in the same order as the reference for every coefficient that is
+    /// summed, so the same values, bit for bit.
     pub(crate) fn projected_fast<R: Real, const GRADIENT: bool>(
         &self,
         p: [R; 3],
@@ -814,14 +820,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             return sums.finish(nrm);
         }
         let window = ProjectedWindow::new(p, nrm);
-        // One copy in wasm, whose module has a size budget (the value is the same, bit for
-        // bit, with the gradient or without).
-        let oblique = if cfg!(target_arch = "wasm32") {
-            self.projected_oblique::<R, true>(&window, nrm)
-        } else {
-            self.projected_oblique::<R, GRADIENT>(&window, nrm)
-        };
-        if let Some([value, gx, gy, gz]) = oblique {
+        if let Some([value, gx, gy, gz]) = self.projected_oblique::<R, GRADIENT>(&window, nrm) {
             let sums = Sums::<R, GRADIENT> {
                 value,
                 partial: [gx, gy, gz],
@@ -880,7 +879,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     ///
     /// Within rounding of the reference (`t` from the affine form, the sums in another
     /// order): `fast_path_is_the_compact_path`. Out of line, one copy per number type and
-    /// gradient flag (one per number type in wasm).
+    /// gradient flag.
     #[inline(never)]
     fn projected_oblique<R: Real, const GRADIENT: bool>(
         &self,
@@ -1148,7 +1147,7 @@ fn crossing<R: Real>(at: usize, h: usize) -> [R; 2] {
 }
 
 /// The offsets `jx` of a row of a projected window (at fixed `jy`, `jz`) where the basis can
-/// be non-zero, along an oblique normal.
+/// be non-zero, for the windows summed coefficient by coefficient through a [`Window`].
 ///
 /// Along a row, each `t_a` is linear in `jx`: with `d_x` falling by 1 per step,
 /// `t_a(jx) = t_a(0) + σ_a jx`, `σ_x = 1 − n_x²/2` (in `[½, 1]`), `σ_y = −n_x n_y/2`,
