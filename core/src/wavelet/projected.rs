@@ -827,12 +827,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             };
             return sums.finish(nrm);
         }
-        let ProjectedWindow {
-            first,
-            count,
-            centre,
-            along,
-        } = window;
+        let (first, count) = (window.first, window.count);
+        let (centre, along) = (&window.centre, &window.along);
         let half = R::from_ratio(1, 1);
         // Coefficient by coefficient: the windows whose blocks neither block path takes (along
         // an axis the rows' `t` are the same numbers: the other components' terms of `n·d`
