@@ -31,6 +31,7 @@ use crate::batch::{Grid, LANES, for_each_rows, lane};
 use crate::hash::{CellHash, mix};
 use crate::{Error, Noise, Real};
 
+mod fixed;
 mod row;
 pub(crate) use row::GROUP;
 
@@ -65,6 +66,23 @@ pub trait TileData<const D: usize> {
     }
     /// The largest `|coefficient|`.
     fn max_abs(&self) -> f32;
+    /// `Some(s)` if every coefficient is an `i16` integer `q` ([`raw`](Self::raw)) times
+    /// `2^−s`, read exactly by [`flat`](Self::flat) in every number type: fixed-point
+    /// samples then sum the integers in 32-bit arithmetic, with the same bits as through
+    /// `flat` (the quantized tiles, which need it on cores without a long multiply). The
+    /// default: `None`.
+    #[inline]
+    fn quantized_shift(&self) -> Option<u32> {
+        None
+    }
+    /// The integer `q` of the coefficient at flat index `index` (below `SIZE^D`), whose
+    /// value is `q · 2^−s` for the `s` of [`quantized_shift`](Self::quantized_shift); read
+    /// only where that is `Some`. The default: 0.
+    #[inline]
+    fn raw(&self, index: usize) -> i16 {
+        let _ = index;
+        0
+    }
     /// The coefficients along x at tile indices `y`, `z` (a 3D tile, each below `SIZE`), if
     /// the storage holds them as a run of `SIZE` `f32`s: lets a band projected along an axis
     /// read runs of coefficients several at a time. The run must hold the values
@@ -572,6 +590,15 @@ impl<'t, T> Wavelet<'t, T> {
     where
         T: TileData<D>,
     {
+        if fixed::QUANTIZED
+            && !R::FLOAT
+            && let Some(shift) = self.tile.quantized_shift()
+            && (fixed::MIN_SHIFT..=16).contains(&shift)
+        {
+            // I16F16 on a quantized tile: the same bits in 32-bit integer operations.
+            let bits = self.evaluate_quantized(p.map(|x| x.fixed_bits()), shift);
+            return R::from_ratio(bits, 16);
+        }
         let mut first = [0i32; D];
         let mut weights = [[[R::ZERO; 1]; 3]; D];
         for a in 0..D {

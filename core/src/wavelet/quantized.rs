@@ -93,13 +93,11 @@ impl<const N: usize> QuantizedTile2<N> {
     /// `q` at flat index `x + N·y`: in range by construction; `get` keeps sampling provably
     /// panic-free.
     #[inline]
-    fn read(&self, index: usize) -> i32 {
-        self.data
-            .as_flattened()
-            .get(index)
+    fn read(&self, index: usize) -> i16 {
+        let data = self.data.as_flattened();
+        data.get(super::band::within(index, data.len()))
             .copied()
             .unwrap_or(0)
-            .into()
     }
 }
 
@@ -138,12 +136,11 @@ impl<const N: usize> QuantizedTile3<N> {
     /// `q` at flat index `x + N·(y + N·z)`: in range by construction; `get` keeps sampling
     /// provably panic-free.
     #[inline]
-    fn read(&self, index: usize) -> i32 {
+    fn read(&self, index: usize) -> i16 {
         let data = self.data.as_flattened().as_flattened();
         data.get(super::band::within(index, data.len()))
             .copied()
             .unwrap_or(0)
-            .into()
     }
 }
 
@@ -155,7 +152,7 @@ impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(self.read(index), self.shift)
+        R::from_ratio(self.read(index).into(), self.shift)
     }
     #[inline]
     fn unit<R: Real>(&self) -> R {
@@ -163,10 +160,18 @@ impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     }
     #[inline]
     fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
-        R::from_ratio_unit(self.read(index), self.shift, unit)
+        R::from_ratio_unit(self.read(index).into(), self.shift, unit)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
+    }
+    #[inline]
+    fn quantized_shift(&self) -> Option<u32> {
+        Some(self.shift)
+    }
+    #[inline]
+    fn raw(&self, index: usize) -> i16 {
+        self.read(index)
     }
 }
 
@@ -178,7 +183,7 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     }
     #[inline]
     fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(self.read(index), self.shift)
+        R::from_ratio(self.read(index).into(), self.shift)
     }
     #[inline]
     fn unit<R: Real>(&self) -> R {
@@ -186,10 +191,18 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     }
     #[inline]
     fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
-        R::from_ratio_unit(self.read(index), self.shift, unit)
+        R::from_ratio_unit(self.read(index).into(), self.shift, unit)
     }
     fn max_abs(&self) -> f32 {
         self.max_abs
+    }
+    #[inline]
+    fn quantized_shift(&self) -> Option<u32> {
+        Some(self.shift)
+    }
+    #[inline]
+    fn raw(&self, index: usize) -> i16 {
+        self.read(index)
     }
 }
 
