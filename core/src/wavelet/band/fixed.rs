@@ -1,5 +1,8 @@
 //! Fixed-point samples of a band on a quantized tile in 32-bit integer arithmetic, bit for bit
-//! as [`Wavelet::evaluate`] computes them through [`Real`](crate::Real)'s I16F16 operations.
+//! as [`Wavelet::evaluate`] computes them through [`Real`](crate::Real)'s I16F16 operations:
+//! Cook & DeRose 2005's band (§3.6, Appendix 2: the quadratic B-spline through 3ᵈ
+//! coefficients) over the blocks of `band.rs`'s tilings (§4.3), for cores without a long
+//! multiply.
 //!
 //! A quantized tile's coefficient is `c = q · 2^−s` with `q` an `i16`
 //! ([`TileData::quantized_shift`]): in I16F16 its bits are `q · 2^(16−s)`, and the rounded
@@ -20,7 +23,10 @@
 //! coefficients may be visited in any order; coefficients beyond a block's reach are skipped
 //! (the generic path adds their zero products or skips them too).
 
-use super::{TileData, Wavelet, ZONE, axis_offsets, axis_span, members, zone_at};
+use super::{
+    Placement, TileData, Wavelet, ZONE, axis_map, axis_span, block_start, members, oriented,
+    zone_at,
+};
 
 /// Whether fixed-point point samples on quantized tiles take these sums: everywhere but
 /// wasm32, whose demo module's size budget would pay for a second copy of the sums (its
@@ -69,6 +75,39 @@ fn mul_weight_halves(w: i32, c: i32) -> i32 {
         .wrapping_add(((w as u32).wrapping_mul(cl).wrapping_add(1 << 15) >> 16) as i32)
 }
 
+/// The tile's flat-index parts along output axis `a` of the three coefficients from local
+/// index `l0` (in the first block) read by the block `m` steps past the first, placed by
+/// `place`: `axis_offsets`' values. For a tile whose side is a power of two (every default
+/// tile) by masks: `u mod n` is `u & (n − 1)`, reversed it is `^ (n − 1)`, and the block's
+/// step of `n` (`block_start`) vanishes modulo `n`; the stride is a shift.
+#[inline(always)]
+fn offsets<const D: usize>(
+    place: &Placement<D>,
+    a: usize,
+    m: usize,
+    l0: usize,
+    n: usize,
+) -> [usize; 3] {
+    let (target, flip) = axis_map::<D>(place.variant, a);
+    if n.is_power_of_two() {
+        let (mask, log) = (n - 1, n.trailing_zeros());
+        let u = l0 + place.shift[a];
+        let reverse = if flip { mask } else { 0 };
+        let shift = target as u32 * log;
+        let at = |j: usize| (((u + j) & mask) ^ reverse) << shift;
+        [at(0), at(1), at(2)]
+    } else {
+        let stride = match target {
+            0 => 1,
+            1 => n,
+            _ => n * n,
+        };
+        let u = l0 + block_start(place, a, m, n);
+        let at = |j: usize| oriented(u + j, n, flip) * stride;
+        [at(0), at(1), at(2)]
+    }
+}
+
 impl<T> Wavelet<'_, T> {
     /// [`evaluate`](Wavelet::evaluate) in I16F16 (`p` and the result as bits) on a tile with
     /// [`quantized_shift`](TileData::quantized_shift) `shift ≥` [`MIN_SHIFT`]: the same bits
@@ -81,7 +120,7 @@ impl<T> Wavelet<'_, T> {
         let (n, h) = (T::SIZE, self.half_width::<D>());
         let mut w = [[0i32; 3]; D];
         let mut block = [0i32; D];
-        let mut local0 = [[0usize; 1]; D];
+        let mut local0 = [0usize; D];
         let mut crossing = 0usize;
         for a in 0..D {
             // `split` and `minus_half` on the bits.
@@ -93,12 +132,12 @@ impl<T> Wavelet<'_, T> {
             };
             w[a] = weights(f);
             let (b, l0, two) = axis_span(first, n, h);
-            (block[a], local0[a]) = (b, [l0]);
+            (block[a], local0[a]) = (b, l0);
             crossing |= (two as usize) << a;
         }
-        let mut off = [[[0usize; 1]; 3]; D];
         if crossing == 0 {
-            axis_offsets(&mut off, &self.placement(block), 0, &local0, n);
+            let place = self.placement(block);
+            let off = core::array::from_fn(|a| offsets(&place, a, 0, local0[a], n));
             return self.quantized_block(&w, &off, 0b111, shift);
         }
         // Each axis's weights in the first block and the next: along a crossing axis in a
@@ -108,7 +147,7 @@ impl<T> Wavelet<'_, T> {
             for (s, side) in sides.iter_mut().enumerate() {
                 for (a, axis) in side.iter_mut().enumerate() {
                     if crossing >> a & 1 == 1 {
-                        let at = zone_at(local0[a][0], n, h);
+                        let at = zone_at(local0[a], n, h);
                         for (j, wj) in axis.iter_mut().enumerate() {
                             let b = ZONE[s & 1][(at + j) & 15] as u32;
                             // `w ≤ ¾`, `b ≤ 1`: the product fits 32 bits unsigned.
@@ -120,7 +159,7 @@ impl<T> Wavelet<'_, T> {
         }
         // Coefficients beyond a block's reach: skipped along x (whole columns), weighing 0
         // along the other axes (only needed where blocks abut: a blend weight is 0 there).
-        let bits = members(crossing, local0.map(|[l]| l), n, h);
+        let bits = members(crossing, local0, n, h);
         for (side, bits) in sides.iter_mut().zip(bits) {
             for (axis, bits) in side.iter_mut().zip(bits).skip(1) {
                 for (j, wj) in axis.iter_mut().enumerate() {
@@ -136,7 +175,7 @@ impl<T> Wavelet<'_, T> {
                 continue;
             }
             let place = self.placement(self.step(block, m));
-            axis_offsets(&mut off, &place, m, &local0, n);
+            let off = core::array::from_fn(|a| offsets(&place, a, m, local0[a], n));
             let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
             let columns = bits[m & 1][0];
             sum = sum.wrapping_add(self.quantized_block(&weights, &off, columns, shift));
@@ -154,7 +193,7 @@ impl<T> Wavelet<'_, T> {
     fn quantized_block<const D: usize>(
         &self,
         w: &[[i32; 3]; D],
-        off: &[[[usize; 1]; 3]; D],
+        off: &[[usize; 3]; D],
         columns: u8,
         shift: u32,
     ) -> i32
@@ -177,17 +216,17 @@ impl<T> Wavelet<'_, T> {
         // The innermost axis's weighted sum of three coefficients from `base`.
         let line = |base: usize| {
             let (w, off) = (&w[D - 1], &off[D - 1]);
-            product(w[0], base + off[0][0])
-                .wrapping_add(product(w[1], base + off[1][0]))
-                .wrapping_add(product(w[2], base + off[2][0]))
+            product(w[0], base + off[0])
+                .wrapping_add(product(w[1], base + off[1]))
+                .wrapping_add(product(w[2], base + off[2]))
         };
         let column = |jx: usize| {
-            let base = off[0][jx][0];
+            let base = off[0][jx];
             if D == 3 {
                 let (w, off) = (&w[1], &off[1]);
-                mul_weight(w[0], line(base + off[0][0]))
-                    .wrapping_add(mul_weight(w[1], line(base + off[1][0])))
-                    .wrapping_add(mul_weight(w[2], line(base + off[2][0])))
+                mul_weight(w[0], line(base + off[0]))
+                    .wrapping_add(mul_weight(w[1], line(base + off[1])))
+                    .wrapping_add(mul_weight(w[2], line(base + off[2])))
             } else {
                 line(base)
             }
