@@ -144,35 +144,43 @@ impl<const N: usize> QuantizedTile3<N> {
     }
 }
 
+/// The [`TileData`] methods both quantized tiles share: every read through `read` (the
+/// integer at a flat index) and the shift.
+macro_rules! quantized_reads {
+    () => {
+        #[inline]
+        fn flat<R: Real>(&self, index: usize) -> R {
+            R::from_ratio(self.read(index).into(), self.shift)
+        }
+        #[inline]
+        fn unit<R: Real>(&self) -> R {
+            R::from_ratio(1, self.shift)
+        }
+        #[inline]
+        fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
+            R::from_ratio_unit(self.read(index).into(), self.shift, unit)
+        }
+        fn max_abs(&self) -> f32 {
+            self.max_abs
+        }
+        #[inline]
+        fn quantized_shift(&self) -> Option<u32> {
+            Some(self.shift)
+        }
+        #[inline]
+        fn raw(&self, index: usize) -> i16 {
+            self.read(index)
+        }
+    };
+}
+
 impl<const N: usize> TileData<2> for QuantizedTile2<N> {
     const SIZE: usize = N;
     #[inline]
     fn get<R: Real>(&self, [x, y]: [usize; 2]) -> R {
         self.flat(x + N * y)
     }
-    #[inline]
-    fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(self.read(index).into(), self.shift)
-    }
-    #[inline]
-    fn unit<R: Real>(&self) -> R {
-        R::from_ratio(1, self.shift)
-    }
-    #[inline]
-    fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
-        R::from_ratio_unit(self.read(index).into(), self.shift, unit)
-    }
-    fn max_abs(&self) -> f32 {
-        self.max_abs
-    }
-    #[inline]
-    fn quantized_shift(&self) -> Option<u32> {
-        Some(self.shift)
-    }
-    #[inline]
-    fn raw(&self, index: usize) -> i16 {
-        self.read(index)
-    }
+    quantized_reads!();
 }
 
 impl<const N: usize> TileData<3> for QuantizedTile3<N> {
@@ -181,29 +189,7 @@ impl<const N: usize> TileData<3> for QuantizedTile3<N> {
     fn get<R: Real>(&self, [x, y, z]: [usize; 3]) -> R {
         self.flat(x + N * (y + N * z))
     }
-    #[inline]
-    fn flat<R: Real>(&self, index: usize) -> R {
-        R::from_ratio(self.read(index).into(), self.shift)
-    }
-    #[inline]
-    fn unit<R: Real>(&self) -> R {
-        R::from_ratio(1, self.shift)
-    }
-    #[inline]
-    fn flat_with<R: Real>(&self, index: usize, unit: R) -> R {
-        R::from_ratio_unit(self.read(index).into(), self.shift, unit)
-    }
-    fn max_abs(&self) -> f32 {
-        self.max_abs
-    }
-    #[inline]
-    fn quantized_shift(&self) -> Option<u32> {
-        Some(self.shift)
-    }
-    #[inline]
-    fn raw(&self, index: usize) -> i16 {
-        self.read(index)
-    }
+    quantized_reads!();
 }
 
 #[cfg(test)]
