@@ -21,7 +21,8 @@
 //! (1.41) per axis, so a sample's sums stay below 2¹³ · 1.41ᴰ < 2¹⁵ (3D: 2¹⁴·1.41 < 2¹⁵).
 //! Without saturation, integer additions in any order give the same sum, so blocks and
 //! coefficients may be visited in any order; coefficients beyond a block's reach are skipped
-//! (the generic path adds their zero products or skips them too).
+//! (whole x columns) or weigh 0 (along the other axes: a zero weight's rounded product is 0),
+//! as the generic path skips them or adds their zero products.
 
 use super::{
     Placement, TileData, Wavelet, ZONE, axis_map, axis_span, block_start, members, oriented,
