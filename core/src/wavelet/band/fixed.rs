@@ -18,15 +18,14 @@
 //! saturate, and these do not, which gives the same bits whenever no sum reaches I16F16's
 //! limit: with `s ≥` [`MIN_SHIFT`] every coefficient is below 2¹³ in magnitude, a block's
 //! weights along an axis sum to at most 1 and a blend zone's pairs to at most `BLEND_GAIN`
-//! (1.41) per axis, so a sample's sums stay below 2¹³ · 1.41ᴰ < 2¹⁵ (3D: 2¹⁴·1.41 < 2¹⁵).
+//! (1.41) per axis, so a sample's sums stay below 2¹³ · 1.41ᴰ < 2¹⁵ (2¹³ · 2.8 in 3D).
 //! Without saturation, integer additions in any order give the same sum, so blocks and
 //! coefficients may be visited in any order; coefficients beyond a block's reach are skipped
 //! (whole x columns) or weigh 0 (along the other axes: a zero weight's rounded product is 0),
 //! as the generic path skips them or adds their zero products.
 
 use super::{
-    Placement, TileData, Wavelet, ZONE, axis_map, axis_span, block_start, members, oriented,
-    zone_at,
+    Placement, TileData, Wavelet, ZONE, axis_map, axis_span, block_start, members, zone_at,
 };
 
 /// Whether fixed-point point samples on quantized tiles take these sums: everywhere but
@@ -89,8 +88,8 @@ fn offsets<const D: usize>(
     l0: usize,
     n: usize,
 ) -> [usize; 3] {
-    let (target, flip) = axis_map::<D>(place.variant, a);
     if n.is_power_of_two() {
+        let (target, flip) = axis_map::<D>(place.variant, a);
         let (mask, log) = (n - 1, n.trailing_zeros());
         let u = l0 + place.shift[a];
         let reverse = if flip { mask } else { 0 };
@@ -106,14 +105,12 @@ fn offsets<const D: usize>(
         };
         [at(0), at(1), at(2)]
     } else {
-        let stride = match target {
-            0 => 1,
-            1 => n,
-            _ => n * n,
-        };
-        let u = l0 + block_start(place, a, m, n);
-        let at = |j: usize| oriented(u + j, n, flip) * stride;
-        [at(0), at(1), at(2)]
+        // `AxisMap::offset` adds the block's shift; `block_start` less it is `n` or `2n`.
+        let (map, u) = (
+            place.axis(a, n),
+            l0 + block_start(place, a, m, n) - place.shift[a],
+        );
+        [map.offset(u, n), map.offset(u + 1, n), map.offset(u + 2, n)]
     }
 }
 
