@@ -564,6 +564,45 @@ pub(crate) fn first_block(g: i32, n: usize, h: usize) -> (i32, usize, bool) {
     }
 }
 
+/// The tile's flat-index parts along output axis `a` of the `K` coefficients from local
+/// index `l0` (in the first block) read by the block `m` steps (one bit per axis) past the
+/// first, placed by `place`: [`AxisMap::offset`]'s values. For a tile whose side is a power
+/// of two (every default tile) by masks, which vectorise: `u mod n` is `u & (n − 1)`,
+/// reversed it is `^ (n − 1)`, and the block's step of `n` ([`block_start`]) vanishes
+/// modulo `n`; the stride is a shift.
+#[inline(always)]
+pub(crate) fn offset_run<const D: usize, const K: usize>(
+    place: &Placement<D>,
+    a: usize,
+    m: usize,
+    l0: usize,
+    n: usize,
+) -> [usize; K] {
+    if n.is_power_of_two() {
+        let (target, flip) = axis_map::<D>(place.variant, a);
+        let (mask, log) = (n - 1, n.trailing_zeros());
+        let u = l0 + place.shift[a];
+        let reverse = if flip { mask } else { 0 };
+        // The stride as a shift chosen by a match, not `target · log`: each part then lies
+        // in its own bits of the flat index, which the optimiser sees (see `fixed::join`).
+        core::array::from_fn(|j| {
+            let t = ((u + j) & mask) ^ reverse;
+            match target {
+                0 => t,
+                1 => t << log,
+                _ => t << (2 * log),
+            }
+        })
+    } else {
+        // `AxisMap::offset` adds the block's shift; `block_start` less it is `n` or `2n`.
+        let (map, u) = (
+            place.axis(a, n),
+            l0 + block_start(place, a, m, n) - place.shift[a],
+        );
+        core::array::from_fn(|j| map.offset(u + j, n))
+    }
+}
+
 /// The flat-index contribution of coefficient `j` along each axis, per lane, in the block
 /// `m` steps (one bit per axis) past the first: local index `local0[a][l] + j − n·m_a`, shifted
 /// and oriented by `place`, times the stride of the tile axis it reads. (A function, not a

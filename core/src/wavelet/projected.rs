@@ -32,7 +32,7 @@ use crate::{ProjectedNoise, Real};
 use core::ops::Range;
 
 use super::band::{
-    CROSSING, CUBE, PERMUTATIONS3, Placement, TileData, Wavelet, first_block, within,
+    CROSSING, CUBE, PERMUTATIONS3, Placement, TileData, Wavelet, first_block, offset_run, within,
 };
 use super::window::{WIDTH, Window};
 
@@ -930,11 +930,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let mut parts = [[[0usize; WIDTH]; 3]; 8];
         for &(block, ref place) in places.iter().take(blocks) {
             for (a, part) in parts[block % 8].iter_mut().enumerate() {
-                let axis = place.axis(a, n);
-                let back = (block >> a & 1) * n;
-                for (k, p) in part.iter_mut().enumerate().take(count[a]) {
-                    *p = axis.offset(local[a] + k + n - back, n);
-                }
+                *part = offset_run(place, a, block, local[a], n);
             }
         }
         // The basis arguments at offset 0, and each axis's rise per offset along each axis,
@@ -956,16 +952,10 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
             }
         }
-        // Per axis and offset, which slots reach it (bit s: slot s); along x, each slot's
+        // Per slot and axis, the offsets it reaches (bit j: offset j); along x, each slot's
         // offsets and how many slots there are.
-        let mut reached = [[0u8; WIDTH]; 3];
-        for (a, reached) in reached.iter_mut().enumerate() {
-            for (j, bits) in reached.iter_mut().enumerate() {
-                for (s, reach) in reach.iter().enumerate() {
-                    *bits |= u8::from(reach[a].0 <= j && j < reach[a].1) << s;
-                }
-            }
-        }
+        let reached: [[u32; 3]; 2] =
+            reach.map(|reach| reach.map(|(from, to)| (1u32 << to) - (1u32 << from.min(to))));
         let x_reach = [reach[0][0], reach[1][0]];
         let x_slots = 1 + (slots & 1);
         let (tile, three) = (self.tile(), R::from_i32(3));
@@ -1016,11 +1006,11 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                 }
                 // The blocks that reach the row, in increasing order (x fastest).
                 for sz in 0..2 {
-                    if reached[2][jz] >> sz & 1 == 0 {
+                    if reached[sz][2] >> jz & 1 == 0 {
                         continue;
                     }
                     for sy in 0..2 {
-                        if reached[1][jy] >> sy & 1 == 0 {
+                        if reached[sy][1] >> jy & 1 == 0 {
                             continue;
                         }
                         let across = omega[sy][1][jy].mul_rn(omega[sz][2][jz]);

@@ -24,9 +24,7 @@
 //! (whole x columns) or weigh 0 (along the other axes: a zero weight's rounded product is 0),
 //! as the generic path skips them or adds their zero products.
 
-use super::{
-    Placement, TileData, Wavelet, ZONE, axis_map, axis_span, block_start, members, zone_at,
-};
+use super::{TileData, Wavelet, ZONE, axis_span, members, offset_run, zone_at};
 
 /// Whether fixed-point point samples on quantized tiles take these sums: everywhere but
 /// wasm32, whose demo module's size budget would pay for a second copy of the sums (its
@@ -75,46 +73,7 @@ fn mul_weight_halves(w: i32, c: i32) -> i32 {
         .wrapping_add(((w as u32).wrapping_mul(cl).wrapping_add(1 << 15) >> 16) as i32)
 }
 
-/// The tile's flat-index parts along output axis `a` of the three coefficients from local
-/// index `l0` (in the first block) read by the block `m` steps past the first, placed by
-/// `place`: `axis_offsets`' values. For a tile whose side is a power of two (every default
-/// tile) by masks: `u mod n` is `u & (n − 1)`, reversed it is `^ (n − 1)`, and the block's
-/// step of `n` (`block_start`) vanishes modulo `n`; the stride is a shift.
-#[inline(always)]
-fn offsets<const D: usize>(
-    place: &Placement<D>,
-    a: usize,
-    m: usize,
-    l0: usize,
-    n: usize,
-) -> [usize; 3] {
-    if n.is_power_of_two() {
-        let (target, flip) = axis_map::<D>(place.variant, a);
-        let (mask, log) = (n - 1, n.trailing_zeros());
-        let u = l0 + place.shift[a];
-        let reverse = if flip { mask } else { 0 };
-        // The stride as a shift chosen by a match, not `target · log`: each part then lies
-        // in its own bits of the flat index, which the optimiser sees (see `join`).
-        let at = |j: usize| {
-            let t = ((u + j) & mask) ^ reverse;
-            match target {
-                0 => t,
-                1 => t << log,
-                _ => t << (2 * log),
-            }
-        };
-        [at(0), at(1), at(2)]
-    } else {
-        // `AxisMap::offset` adds the block's shift; `block_start` less it is `n` or `2n`.
-        let (map, u) = (
-            place.axis(a, n),
-            l0 + block_start(place, a, m, n) - place.shift[a],
-        );
-        [map.offset(u, n), map.offset(u + 1, n), map.offset(u + 2, n)]
-    }
-}
-
-/// The flat index of two parts from [`offsets`] of different axes: their sum, which for a
+/// The flat index of two parts from [`offset_run`] of different axes: their sum, which for a
 /// power-of-two side is their bitwise or (each part lies in its axis's bits), so the
 /// optimiser sees the index below `n^D` and the read needs no mask.
 #[inline(always)]
@@ -151,7 +110,7 @@ impl<T> Wavelet<'_, T> {
         }
         if crossing == 0 {
             let place = self.placement(block);
-            let off = core::array::from_fn(|a| offsets(&place, a, 0, local0[a], n));
+            let off = core::array::from_fn(|a| offset_run(&place, a, 0, local0[a], n));
             return self.quantized_block(&w, &off, 0b111, shift);
         }
         // Each axis's weights in the first block and the next: along a crossing axis in a
@@ -189,7 +148,7 @@ impl<T> Wavelet<'_, T> {
                 continue;
             }
             let place = self.placement(self.step(block, m));
-            let off = core::array::from_fn(|a| offsets(&place, a, m, local0[a], n));
+            let off = core::array::from_fn(|a| offset_run(&place, a, m, local0[a], n));
             let weights = core::array::from_fn(|a| sides[m >> a & 1][a]);
             let columns = bits[m & 1][0];
             sum = sum.wrapping_add(self.quantized_block(&weights, &off, columns, shift));
