@@ -59,7 +59,7 @@
 //! an oblique normal, whose basis is not a product of per-axis B-splines, about 8 times. In
 //! fixed point on the quantized tiles a band is summed in 32-bit integer arithmetic (the
 //! same bits as through I16F16's operations; `band/fixed.rs`): on a Cortex-M0, which has no
-//! long multiply, a 2D band with the default tiling takes about 3 times the instructions of
+//! long multiply, a 2D band with the default tiling takes about 2.8 times the instructions of
 //! fixed-point 2D Perlin noise. Figures per machine and tiling are in `bench/README.md`.
 
 mod band;
