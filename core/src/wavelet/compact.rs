@@ -10,7 +10,7 @@
 use crate::Real;
 
 use super::band::{Placement, TileData, Wavelet, blend_weight, first_block, tile_index};
-use super::projected::{Sums, bspline, support_box};
+use super::projected::{Sums, bspline};
 
 /// Block placements for the blocks per axis that a projected or filtered sample touches, by
 /// their place from the base, the first block that reaches its first coefficient: its at most
@@ -49,7 +49,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         let mut kmax = [0i32; 3];
         for a in 0..3 {
             (cell[a], frac[a]) = p[a].split();
-            (kmin[a], kmax[a]) = support_box(frac[a], nrm[a]);
+            (kmin[a], kmax[a]) = wide_box(frac[a], nrm[a]);
         }
         // Block q reaches coefficients [qn − h, qn + n + h): the first block that reaches
         // coefficient c is ⌊(c − h)/n⌋.
@@ -153,4 +153,20 @@ pub(crate) fn fetcher<'a, R: Real, T: TileData<D>, const D: usize>(
         let g = core::array::from_fn(|a| first[a].wrapping_add(k[a] as i32));
         band.fetch(g, &mut placements)
     }
+}
+
+/// The offsets `kmin..=kmax` from the cell, along one axis, that the reference visits from
+/// fraction `frac` along a unit normal with component `na`: those within
+/// `3|n_a| + 3√((1 − n_a²)/2) + 1/8` of the point, a bound at least the fast paths'
+/// (`projected::support_box`, the exact one plus 1/8) for every unit normal, equal to it
+/// only along the axis: so the tests see any coefficient of the support those windows would
+/// leave out.
+fn wide_box<R: Real>(frac: R, na: R) -> (i32, i32) {
+    let na = na.abs();
+    let s = R::from_i32(3).mul_rn(na)
+        + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(R::from_ratio(1, 1)).sqrt())
+        + R::from_ratio(1, 8);
+    let (lo, lo_frac) = (frac - s).split();
+    let kmin = if lo_frac == R::ZERO { lo } else { lo + 1 };
+    (kmin, (frac + s).split().0)
 }

@@ -56,7 +56,7 @@
 //! every 64 coefficients per axis in 2D, 8 of 32 in 3D), so a sample whose coefficients reach
 //! a zone costs several times more. A band projected along an axis costs about twice a 3D
 //! band, as Cook & DeRose found projection to ("approximately doubles the cost", §5.2); along
-//! an oblique normal, whose basis is not a product of per-axis B-splines, about 8 times. In
+//! an oblique normal, whose basis is not a product of per-axis B-splines, about 7 times. In
 //! fixed point on the quantized tiles a band is summed in 32-bit integer arithmetic (the
 //! same bits as through I16F16's operations; `band/fixed.rs`): on a Cortex-M0, which has no
 //! long multiply, a 2D band with the default tiling takes about 2.8 times the instructions of
