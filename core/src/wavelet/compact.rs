@@ -10,7 +10,7 @@
 use crate::Real;
 
 use super::band::{Placement, TileData, Wavelet, blend_weight, first_block, tile_index};
-use super::projected::{Sums, bspline};
+use super::projected::{Sums, bspline, offsets_within};
 
 /// Block placements for the blocks per axis that a projected or filtered sample touches, by
 /// their place from the base, the first block that reaches its first coefficient: its at most
@@ -157,16 +157,15 @@ pub(crate) fn fetcher<'a, R: Real, T: TileData<D>, const D: usize>(
 
 /// The offsets `kmin..=kmax` from the cell, along one axis, that the reference visits from
 /// fraction `frac` along a unit normal with component `na`: those within
-/// `3|n_a| + 3√((1 − n_a²)/2) + 1/8` of the point, a bound at least the fast paths'
-/// (`projected::support_box`, the exact one plus 1/8) for every unit normal, equal to it
-/// only along the axis: so the tests see any coefficient of the support those windows would
-/// leave out.
+/// `3|n_a| + 3√((1 − n_a²)/2) + 2⁻⁸` of the point. For every unit normal that is at least the
+/// support's extent along the axis, `3/2 (1 + |n_a| ‖n‖₁)` (equal to it, but for the `2⁻⁸`,
+/// only when `n_a = ±1`), up to 0.6 more elsewhere, and it does not depend on the fast paths'
+/// bound (`projected::support_box`): so the tests see any coefficient of the support those
+/// windows would leave out.
 fn wide_box<R: Real>(frac: R, na: R) -> (i32, i32) {
     let na = na.abs();
     let s = R::from_i32(3).mul_rn(na)
         + R::from_i32(3).mul_rn((R::ONE - na.mul_rn(na)).mul_rn(R::from_ratio(1, 1)).sqrt())
         + R::from_ratio(1, 8);
-    let (lo, lo_frac) = (frac - s).split();
-    let kmin = if lo_frac == R::ZERO { lo } else { lo + 1 };
-    (kmin, (frac + s).split().0)
+    offsets_within(frac, s)
 }

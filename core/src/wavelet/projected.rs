@@ -729,6 +729,13 @@ const fn span(a: usize, normal: usize) -> usize {
 #[inline]
 pub(super) fn support_box<R: Real>(frac: R, na: R, l1: R) -> (i32, i32) {
     let s = R::from_ratio(3, 1).mul_rn(R::ONE + na.abs().mul_rn(l1)) + R::from_ratio(1, 3);
+    offsets_within(frac, s)
+}
+
+/// The offsets `kmin..=kmax` from the cell of the coefficients within `s` of fraction `frac`
+/// (the closed interval `[frac − s, frac + s]`).
+#[inline]
+pub(super) fn offsets_within<R: Real>(frac: R, s: R) -> (i32, i32) {
     let (lo, lo_frac) = (frac - s).split();
     let kmin = if lo_frac == R::ZERO { lo } else { lo + 1 };
     (kmin, (frac + s).split().0)
