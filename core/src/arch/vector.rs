@@ -64,16 +64,21 @@ pub(super) trait Lanes: Copy {
     fn high_pairs(self) -> Self;
     /// Lane 0.
     fn first(self) -> f32;
-    /// [`Real::split`](crate::Real::split) of the lanes `axes` selects (a bit per lane): the
-    /// cells reduced mod 256 and the fractions. `None` leaves the point to the shared kernel: a
-    /// coordinate outside `(−2^31, 2^31)` or not finite, or a negative one so small that its
-    /// fraction rounds to 1 (the next cell, fraction 0, in `Real::split`). Leaving that rare case
-    /// out keeps the cells, and so the hash chain that waits for them, one comparison earlier.
-    /// x86-64 leaves `−0.0` too and takes `−2^31`: the same value either way.
-    ///
-    /// The fraction of `−0.0` may stay `−0.0` (the shared kernel adds `+0.0`); that changes at
-    /// most the sign of a zero in the sum, which [`finish`] canonicalises like the shared
-    /// kernel.
+    /// The sign bits, lane `l` at bit `l` (`movmskps`).
+    fn signs(self) -> u32;
+    /// The lanes whose sign bit is set in `self` and clear in `clear`, lane `l` at bit `l`.
+    fn signs_without(self, clear: Self) -> u32;
+    /// The floor and the fraction of each lane, the cells reduced mod 256, as
+    /// [`Real::split`](crate::Real::split) gives them wherever the fraction is in `[0, 1)`;
+    /// the kernels keep a point only where every fraction they use is
+    /// ([`split_fade`]), and leave the others to the shared kernel: a coordinate outside
+    /// `(−2^31, 2^31)` or not finite, whose fraction is then outside `[0, 1)` or NaN, or a
+    /// negative one so small that its fraction rounds to 1 (the next cell, fraction 0, in
+    /// `Real::split`). Leaving that rare case out keeps the cells, and so the hash chain that
+    /// waits for them, one comparison earlier. `None` where a target's conversion cannot tell
+    /// such a coordinate by its fraction (WebAssembly's saturates), for the lanes `axes`
+    /// selects (a bit per lane). `−0.0` is left too (its fraction is `−0.0`), and x86-64 takes
+    /// `−2^31`: the same value either way.
     fn split(self, axes: u32) -> Option<([usize; 4], Self)>;
 }
 
@@ -280,17 +285,17 @@ impl<G: GradientPairs> Kernel<'_, G> {
     #[inline]
     fn sample2<V: Lanes>(&self, x: f32, y: f32) -> Option<f32> {
         // Each coordinate in two lanes, `[x, x, y, y]` (one shuffle from two numbers), so that
-        // the offsets, and the fade each lerp takes, are one shuffle each or none: the kernel
-        // is bound by its vector operations (`bench/README.md`).
-        let (cell, f, s) = split_fade(V::from_array([x, x, y, y]), 0b1111)?;
+        // the offsets `[fx, fx − 1, fy, fy − 1]`, and the fade each lerp takes, are one
+        // shuffle each or none: the kernel is bound by its vector operations
+        // (`bench/README.md`).
+        let (cell, _, e, s) = split_fade::<V, true>(V::from_array([x, x, y, y]))?;
         let [cx, _, cy, _] = cell;
         // Perlin's chain, x innermost: corner (i, j) hashes p[p[x + i] + y + j]. Lanes hold
         // the corners (0, 0), (0, 1), (1, 0), (1, 1), so that the pairs the lerp along x
         // takes are the vector's halves.
         let (gx, gy) = self.gradients_xy::<V>(self.p(cx) + cy, self.p(cx + 1) + cy);
-        let f1 = f.sub(V::splat(1.0));
         // fx, fx, fx − 1, fx − 1 and fy, fy − 1, fy, fy − 1.
-        let (dx, dy) = (f.low_halves(f1), f.interleave_high(f1));
+        let (dx, dy) = (e.low_pairs(), e.high_half());
         // g_x·d_x + g_y·d_y, the shared kernel's order.
         let v = dx.mul(gx).add(dy.mul(gy));
         // Along x (the fade of x in lanes 0 and 1), then y (in lane 2).
@@ -301,14 +306,13 @@ impl<G: GradientPairs> Kernel<'_, G> {
     /// The noise at `(x, y, z)`, or `None` outside the vector path's range.
     #[inline]
     fn sample3<V: Lanes>(&self, x: f32, y: f32, z: f32) -> Option<f32> {
-        let (cell, f, s) = split_fade(V::from_array([x, y, z, 0.0]), 0b111)?;
+        let (cell, f, f1, s) = split_fade::<V, false>(V::from_array([x, y, z, 0.0]))?;
         let [cx, cy, cz, _] = cell;
         // Perlin's chain, x innermost: corner (i, j, k) hashes p[p[p[x + i] + y + j] + z + k].
         let a = self.p(cx) + cy;
         let b = self.p(cx + 1) + cy;
         let (aa, ab) = (self.p(a) + cz, self.p(a + 1) + cz);
         let (ba, bb) = (self.p(b) + cz, self.p(b + 1) + cz);
-        let f1 = f.sub(V::splat(1.0));
         let u = f.interleave_low(f1); // fx, fx − 1, fy, fy − 1
         let w = f.interleave_high(f1); // fz, fz − 1, 0, −1
         let (dy, dz) = (u.high_pairs(), w.low_halves(w));
@@ -324,7 +328,7 @@ impl<G: GradientPairs> Kernel<'_, G> {
     /// The noise at `(x, y, z, w)`, or `None` outside the vector path's range.
     #[inline]
     fn sample4<V: Lanes>(&self, x: f32, y: f32, z: f32, w: f32) -> Option<f32> {
-        let (cell, f, s) = split_fade(V::from_array([x, y, z, w]), 0b1111)?;
+        let (cell, f, f1, s) = split_fade::<V, false>(V::from_array([x, y, z, w]))?;
         let [cx, cy, cz, cw] = cell;
         // Perlin's chain, x innermost: corner (i, j, k, l) hashes
         // p[p[p[p[x + i] + y + j] + z + k] + w + l].
@@ -332,7 +336,6 @@ impl<G: GradientPairs> Kernel<'_, G> {
         let b = |a: usize| (self.p(a) + cz, self.p(a + 1) + cz);
         let c = |b: usize| (self.p(b) + cw, self.p(b + 1) + cw);
         let ((b00, b01), (b10, b11)) = (b(a0), b(a1));
-        let f1 = f.sub(V::splat(1.0));
         let u = f.interleave_low(f1); // fx, fx − 1, fy, fy − 1
         let v = f.interleave_high(f1); // fz, fz − 1, fw, fw − 1
         // Lanes hold the corners (k, l) = (0, 0), (0, 1), (1, 0), (1, 1) of one (i, j).
@@ -381,16 +384,32 @@ impl<G: GradientPairs> Kernel<'_, G> {
     }
 }
 
-/// [`Lanes::split`], and the quintic fade of the fractions: the cells, the fractions and the
-/// faded fractions.
+/// [`Lanes::split`], the fractions less 1 (with `PAIRS`, less 0 and 1: the lanes hold two
+/// coordinates, each twice, `[a, a, b, b]`, and become `[fa, fa − 1, fb, fb − 1]`), and the
+/// quintic fade of the fractions: the cells, the fractions, the differences and the faded
+/// fractions. `None` unless every fraction is in `[0, 1)`: its sign bit clear and that of the
+/// fraction less 1 set (`f − 1` is never 0 for `f < 1`; NaN keeps its sign through the
+/// subtraction). The kernels need the differences for the corners' offsets, so the test costs
+/// one `andnps` and the mask, and with `PAIRS` the mask alone (the differences' signs are
+/// both; `bench/README.md`: the vector operations bound a sample).
 #[inline]
-fn split_fade<V: Lanes>(v: V, axes: u32) -> Option<([usize; 4], V, V)> {
-    let (cells, f) = v.split(axes)?;
+fn split_fade<V: Lanes, const PAIRS: bool>(v: V) -> Option<([usize; 4], V, V, V)> {
+    let (cells, f) = v.split(if PAIRS { 0b0101 } else { 0b1111 })?;
+    let (e, kept) = if PAIRS {
+        let e = f.sub(V::from_array([0.0, 1.0, 0.0, 1.0]));
+        (e, e.signs() == 0b1010)
+    } else {
+        let e = f.sub(V::splat(1.0));
+        (e, e.signs_without(f) == 0b1111)
+    };
+    if !kept {
+        return None;
+    }
     // Perlin's order: t·t·t·(t·(t·6 − 15) + 10).
     let t3 = f.mul(f).mul(f);
     let inner = f.mul(V::splat(6.0)).sub(V::splat(15.0));
     let s = t3.mul(f.mul(inner).add(V::splat(10.0)));
-    Some((cells, f, s))
+    Some((cells, f, e, s))
 }
 
 /// Perlin's `lerp(t, a, b) = a + t·(b − a)`, lane by lane.

@@ -6,10 +6,9 @@
 //! it loads; it never runs an instruction it lacks).
 
 use core::arch::wasm32::{
-    f32x4, f32x4_abs, f32x4_add, f32x4_convert_i32x4, f32x4_extract_lane, f32x4_ge, f32x4_gt,
-    f32x4_lt, f32x4_mul, f32x4_splat, f32x4_sqrt, f32x4_sub, i32x4_add, i32x4_bitmask,
-    i32x4_extract_lane, i32x4_shuffle, i32x4_trunc_sat_f32x4, u64x2, v128, v128_and, v128_not,
-    v128_or,
+    f32x4, f32x4_abs, f32x4_add, f32x4_convert_i32x4, f32x4_extract_lane, f32x4_gt, f32x4_lt,
+    f32x4_mul, f32x4_splat, f32x4_sqrt, f32x4_sub, i32x4_add, i32x4_bitmask, i32x4_extract_lane,
+    i32x4_shuffle, i32x4_trunc_sat_f32x4, u64x2, v128, v128_and, v128_andnot, v128_not,
 };
 
 use super::vector::Lanes;
@@ -96,16 +95,24 @@ impl Lanes for v128 {
         f32x4_extract_lane::<0>(self)
     }
     #[inline]
+    fn signs(self) -> u32 {
+        u32::from(i32x4_bitmask(self))
+    }
+    #[inline]
+    fn signs_without(self, clear: Self) -> u32 {
+        u32::from(i32x4_bitmask(v128_andnot(self, clear)))
+    }
+    #[inline]
     fn split(self, axes: u32) -> Option<([usize; 4], Self)> {
         // floor: truncate, then one down where truncation rounded up (negative non-integers).
         let t = i32x4_trunc_sat_f32x4(self);
         let above = f32x4_gt(f32x4_convert_i32x4(t), self);
         let cell = i32x4_add(t, above);
         let f = f32x4_sub(self, f32x4_convert_i32x4(cell));
-        // Outside (−2^31, 2^31) or NaN (the conversion saturates there).
+        // Outside (−2^31, 2^31) or NaN (the conversion saturates there, and the fraction may
+        // then be in [0, 1)); the kernels test the fractions of the others.
         let invalid = v128_not(f32x4_lt(f32x4_abs(self), f32x4_splat(2_147_483_648.0)));
-        let rounds_to_one = f32x4_ge(f, f32x4_splat(1.0));
-        if u32::from(i32x4_bitmask(v128_or(invalid, rounds_to_one))) & axes != 0 {
+        if u32::from(i32x4_bitmask(invalid)) & axes != 0 {
             return None;
         }
         let cells = [

@@ -7,14 +7,14 @@ use safe_arch::{
     add_i32_m128i, add_m128, bitand_m128, bitand_m128i, bitandnot_m128, bitor_m128, bitor_m128i,
     bitxor_m128, bitxor_m128i, cast_to_m128_from_m128d, cast_to_m128_from_m128i,
     cast_to_m128i_from_m128, cmp_eq_mask_i32_m128i, cmp_eq_mask_m128, cmp_ge_mask_m128,
-    cmp_gt_mask_i32_m128i, cmp_gt_mask_m128, cmp_lt_mask_i32_m128i, cmp_nlt_mask_m128,
-    convert_to_m128_from_i32_m128i, extract_i16_as_i32_m128i, get_f32_from_m128_s,
-    get_i32_from_m128i_s, load_f64_m128d_s, load_replace_high_m128d, load_unaligned_m128, m128,
-    m128i, max_m128, min_m128, move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128,
-    mul_widen_u32_odd_m128i, set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i,
-    shr_imm_i32_m128i, shr_imm_u32_m128i, shr_imm_u64_m128i, shuffle_abi_f32_all_m128,
-    shuffle_ai_f32_all_m128i, sqrt_m128, sub_i32_m128i, sub_m128, truncate_m128_to_m128i,
-    unpack_high_m128, unpack_low_i32_m128i, unpack_low_m128, zeroed_m128, zeroed_m128i,
+    cmp_gt_mask_i32_m128i, cmp_gt_mask_m128, cmp_lt_mask_i32_m128i, convert_to_m128_from_i32_m128i,
+    extract_i16_as_i32_m128i, get_f32_from_m128_s, get_i32_from_m128i_s, load_f64_m128d_s,
+    load_replace_high_m128d, load_unaligned_m128, m128, m128i, max_m128, min_m128,
+    move_high_low_m128, move_low_high_m128, move_mask_m128, mul_m128, mul_widen_u32_odd_m128i,
+    set_splat_i32_m128i, set_splat_m128, shl_imm_u32_m128i, shr_imm_i32_m128i, shr_imm_u32_m128i,
+    shr_imm_u64_m128i, shuffle_abi_f32_all_m128, shuffle_ai_f32_all_m128i, sqrt_m128,
+    sub_i32_m128i, sub_m128, truncate_m128_to_m128i, unpack_high_m128, unpack_low_i32_m128i,
+    unpack_low_m128, zeroed_m128, zeroed_m128i,
 };
 
 use super::vector::Lanes;
@@ -101,23 +101,24 @@ impl Lanes for m128 {
         get_f32_from_m128_s(self)
     }
     #[inline]
-    fn split(self, axes: u32) -> Option<([usize; 4], Self)> {
+    fn signs(self) -> u32 {
+        move_mask_m128(self) as u32
+    }
+    #[inline]
+    fn signs_without(self, clear: Self) -> u32 {
+        move_mask_m128(bitandnot_m128(clear, self)) as u32
+    }
+    #[inline]
+    fn split(self, _: u32) -> Option<([usize; 4], Self)> {
         // floor: truncate, then one down where truncation rounded up (negative non-integers).
+        // Never `None`: the truncating conversion gives −2^31 outside [−2^31, 2^31) and for
+        // NaN, and the fraction is then NaN (from NaN), at least 2^32 (at or above 2^31), or
+        // negative (below −2^31, where the cell wraps to 2^31 − 1; −∞), which the kernels'
+        // test of the fractions refuses.
         let t = truncate_m128_to_m128i(self);
         let above = cmp_gt_mask_m128(convert_to_m128_from_i32_m128i(t), self);
         let cell = add_i32_m128i(t, cast_to_m128i_from_m128(above));
         let f = sub_m128(self, convert_to_m128_from_i32_m128i(cell));
-        // One test for every case left to the shared kernel, a fraction not in [0, 1) (its
-        // sign, or `!(f < 1)`, which NaN passes): the truncating conversion gives −2^31
-        // outside [−2^31, 2^31) and for NaN, and the fraction is then NaN (from NaN), at
-        // least 2^32 (at or above 2^31), or negative (below −2^31, where the cell wraps to
-        // 2^31 − 1; −∞); a tiny negative's fraction rounds to 1. (`−0.0`, whose fraction is
-        // `−0.0`, goes there too: the same value, slower.)
-        let outside = bitor_m128(cmp_nlt_mask_m128(f, set_splat_m128(1.0)), f);
-        let refused = move_mask_m128(outside);
-        if refused as u32 & axes != 0 {
-            return None;
-        }
         let cells = [
             get_i32_from_m128i_s(cell) as usize & 255,
             extract_i16_as_i32_m128i::<2>(cell) as usize & 255,
