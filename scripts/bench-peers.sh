@@ -4,7 +4,9 @@
 # one run:
 #   1. criterion: ns/sample of every workload, then a table of ratios to the fastest peer;
 #   2. paired: each ratio to the fastest peer, median of interleaved rounds (peers.rs docs);
-#   3. callgrind: instructions per sample of every workload (a figure that does not depend on
+#   3. tilted: 4D Perlin over the grids tilted out of the benchmark's (z, w) plane, by
+#      bandnoise and the 4D peers, paired (bench/src/bin/tilted.rs);
+#   4. callgrind: instructions per sample of every workload (a figure that does not depend on
 #      the machine's load): each runs at 16 and 48 rows and the difference is divided by the
 #      32·1024 extra samples, so start-up work cancels out.
 # The workloads are in bench/src/lib.rs. Takes about 15 minutes on 2 cores.
@@ -17,7 +19,10 @@ fi
 
 cargo bench -p bandnoise-bench --bench peers
 
-cargo build -q -p bandnoise-bench --release --bin callgrind
+cargo build -q -p bandnoise-bench --release --bin callgrind --bin tilted
+echo
+target/release/tilted
+
 bin=target/release/callgrind
 functions=$(sed -n '/^pub const FUNCTIONS/,/\];/p' bench/src/lib.rs | grep -o '"[^"]*"' | tr -d '"')
 implementations=$(sed -n '/^pub const IMPLEMENTATIONS/,/\];/p' bench/src/lib.rs | grep -o '"[^"]*"' | tr -d '"')
