@@ -172,7 +172,7 @@ pub fn quantile(v: &mut [f64], q: f64) -> f64 {
 impl Layout {
     /// Point evaluation of `f` at every sample of `rows` rows (the same coordinates as
     /// [`Layout::grid`]).
-    fn points(self, rows: usize, out: &mut [f32], f: impl Fn(f32, f32) -> f32) {
+    pub fn points(self, rows: usize, out: &mut [f32], f: impl Fn(f32, f32) -> f32) {
         for (j, row) in out.chunks_exact_mut(N).take(rows).enumerate() {
             let y = self.origin[1] + j as f32 * self.step;
             for (i, o) in row.iter_mut().enumerate() {

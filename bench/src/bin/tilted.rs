@@ -24,16 +24,10 @@ fn tilted(x: f32, y: f32) -> [f32; 4] {
     [x, y, Z + 0.29 * x + 0.53 * y, W + 0.41 * x - 0.37 * y]
 }
 
-/// `f` at every tilted point of `rows` rows of `layout`'s grid.
+/// `f` at every tilted point of `rows` rows of `layout`'s grid (instantiated in this binary,
+/// so the library's own rows keep their call sites).
 fn run(layout: Layout, f: impl Fn([f32; 4]) -> f32 + 'static) -> Run {
-    Box::new(move |rows, out| {
-        for (j, row) in out.chunks_exact_mut(N).take(rows).enumerate() {
-            let y = layout.origin[1] + j as f32 * layout.step;
-            for (i, o) in row.iter_mut().enumerate() {
-                *o = f(tilted(layout.origin[0] + i as f32 * layout.step, y));
-            }
-        }
-    })
+    Box::new(move |rows, out| layout.points(rows, out, |x, y| f(tilted(x, y))))
 }
 
 fn main() {
