@@ -63,12 +63,13 @@ pub fn layout(name: &str) -> Option<Layout> {
 }
 
 /// What a workload computes (a row of the table).
-pub const FUNCTIONS: [&str; 33] = [
+pub const FUNCTIONS: [&str; 34] = [
     "perlin-2d",
     "perlin-3d",
     "perlin-4d",
     "tabled-perlin-2d",
     "tabled-perlin-3d",
+    "tabled-perlin-4d",
     "mnoise-2d",
     "mnoise-3d",
     "mnoise-4d",
@@ -287,6 +288,8 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         ("tabled-perlin-2d", "bandnoise-batch") => l.batch::<_, 2>(TabledPerlin::new(0)),
         ("tabled-perlin-3d", "bandnoise") => l.point::<_, 3>(TabledPerlin::new(0)),
         ("tabled-perlin-3d", "bandnoise-batch") => l.batch::<_, 3>(TabledPerlin::new(0)),
+        ("tabled-perlin-4d", "bandnoise") => l.point::<_, 4>(TabledPerlin::new(0)),
+        ("tabled-perlin-4d", "bandnoise-batch") => l.batch::<_, 4>(TabledPerlin::new(0)),
         ("mnoise-2d", "bandnoise") => l.point::<_, 2>(MNoise::new(0)),
         ("mnoise-2d", "bandnoise-batch") => l.batch::<_, 2>(MNoise::new(0)),
         ("mnoise-3d", "bandnoise") => l.point::<_, 3>(MNoise::new(0)),
@@ -524,7 +527,7 @@ pub fn peer_function(function: &str) -> &str {
         "tabled-perlin-2d" | "mnoise-2d" | "wavelet-2d" | "multiband-2d" | "sparse-2d" => {
             "perlin-2d"
         }
-        "mnoise-4d" | "mixed-mnoise-4d" => "perlin-4d",
+        "tabled-perlin-4d" | "mnoise-4d" | "mixed-mnoise-4d" => "perlin-4d",
         "flow-2d" => "simplex-2d",
         "tabled-perlin-3d"
         | "mnoise-3d"

@@ -88,7 +88,7 @@ pub fn to_f64<const D: usize>(p: [I16F16; D]) -> [f64; D] {
 pub enum Lattice {
     /// Perlin's improved noise (boxed: 512 bytes, the others a few).
     Perlin(Box<Perlin>),
-    /// Perlin's improved noise with its per-seed table (boxed: 16.5 KiB on x86-64).
+    /// Perlin's improved noise with its per-seed table (boxed: 32.5 KiB on x86-64).
     Tabled(Box<TabledPerlin>),
     /// Perlin's original noise.
     Original(OriginalPerlin),

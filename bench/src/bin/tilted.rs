@@ -1,8 +1,9 @@
-//! 4D Perlin noise by bandnoise and the 4D peers over the peer benchmark's grids tilted out of
-//! the plane `(z, w) = (Z, W)` (`z = Z + 0.29·x + 0.53·y`, `w = W + 0.41·x − 0.37·y`), so that
-//! every sample has its own `z` and `w`: `tilted [ROUNDS]` prints, per layout, each
-//! implementation's median ns per sample and bandnoise's paired ratio to the fastest peer
-//! (median and quartiles over `ROUNDS` interleaved rounds of 32 rows, 101 if left out).
+//! 4D Perlin noise by bandnoise (`Perlin` and `TabledPerlin`) and the 4D peers over the peer
+//! benchmark's grids tilted out of the plane `(z, w) = (Z, W)` (`z = Z + 0.29·x + 0.53·y`,
+//! `w = W + 0.41·x − 0.37·y`), so that every sample has its own `z` and `w`:
+//! `tilted [ROUNDS]` prints, per layout, each implementation's median ns per sample and each
+//! bandnoise type's paired ratio to the fastest peer (median and quartiles over `ROUNDS`
+//! interleaved rounds of 32 rows, 101 if left out).
 //!
 //! On the benchmark's own plane a peer whose hash is a sum of per-axis terms (noise-functions)
 //! has the constant `z` and `w` terms hoisted out of its loop, once the compiler has inlined its
@@ -11,13 +12,16 @@
 //! the compiler stop inlining its plane row, which then took twice its time.
 
 use bandnoise::Noise;
-use bandnoise::lattice::Perlin;
+use bandnoise::lattice::{Perlin, TabledPerlin};
 use bandnoise_bench::{LAYOUTS, Layout, N, Run, W, Z, quantile, seconds};
 use noise::NoiseFn;
 use noise_functions::Noise as _;
 
 /// Grid rows each implementation fills in a round.
 const ROWS: usize = 32;
+
+/// How many of the runs are bandnoise's (the first ones); the rest are the peers.
+const OURS: usize = 2;
 
 /// The point `(x, y)` of a grid row, tilted out of the plane.
 fn tilted(x: f32, y: f32) -> [f32; 4] {
@@ -42,10 +46,12 @@ fn main() {
     let mut out = vec![0.0f32; N * N];
     for layout in LAYOUTS {
         let perlin = Perlin::new(0);
+        let tabled = Box::new(TabledPerlin::new(0));
         let noise = noise::Perlin::new(0);
         let libnoise = libnoise::Source::<4>::perlin(0);
-        let runs: [(&str, Run); 4] = [
+        let runs: [(&str, Run); 3 + OURS] = [
             ("bandnoise", run(layout, move |p| perlin.sample(p))),
+            ("bandnoise tabled", run(layout, move |p| tabled.sample(p))),
             (
                 "noise",
                 run(layout, move |p| noise.get(p.map(f64::from)) as f32),
@@ -62,7 +68,7 @@ fn main() {
             ),
         ];
         let mut times = vec![Vec::new(); runs.len()];
-        let mut ratios = Vec::new();
+        let mut ratios = [(); OURS].map(|()| Vec::new());
         // One round unmeasured, to warm caches and branch predictors.
         for round in 0..=rounds {
             let t: Vec<f64> = runs
@@ -70,8 +76,10 @@ fn main() {
                 .map(|(_, run)| seconds(run, ROWS, &mut out))
                 .collect();
             if round > 0 {
-                let fastest_peer = t[1..].iter().copied().fold(f64::INFINITY, f64::min);
-                ratios.push(t[0] / fastest_peer);
+                let fastest_peer = t[OURS..].iter().copied().fold(f64::INFINITY, f64::min);
+                for (ratios, t) in ratios.iter_mut().zip(&t) {
+                    ratios.push(t / fastest_peer);
+                }
                 for (times, t) in times.iter_mut().zip(&t) {
                     times.push(t * 1e9 / (ROWS * N) as f64);
                 }
@@ -82,15 +90,19 @@ fn main() {
             .zip(&mut times)
             .map(|((name, _), t)| format!("{name} {:.2}", quantile(t, 0.5)))
             .collect();
-        let (q1, m, q3) = (
-            quantile(&mut ratios, 0.25),
-            quantile(&mut ratios, 0.5),
-            quantile(&mut ratios, 0.75),
-        );
+        let ratios: Vec<String> = runs
+            .iter()
+            .zip(&mut ratios)
+            .map(|((name, _), r)| {
+                let (q1, m, q3) = (quantile(r, 0.25), quantile(r, 0.5), quantile(r, 0.75));
+                format!("{name} {m:.2} [{q1:.2}–{q3:.2}]")
+            })
+            .collect();
         println!(
-            "perlin-4d tilted, layout {}: ns/sample {}; bandnoise / fastest peer {m:.2} [{q1:.2}–{q3:.2}]",
+            "perlin-4d tilted, layout {}: ns/sample {}; ratio to the fastest peer: {}",
             layout.name,
-            ns.join(", ")
+            ns.join(", "),
+            ratios.join(", ")
         );
     }
 }

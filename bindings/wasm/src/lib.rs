@@ -43,7 +43,7 @@ enum Built {
     reason = "one per noise, in the heap (wasm-bindgen boxes RawNoise); a box more would be a load more per sample"
 )]
 enum Direct {
-    /// Perlin noise with its per-seed table (`TabledPerlin`: 16.5 KiB in the module's memory,
+    /// Perlin noise with its per-seed table (`TabledPerlin`: 32.5 KiB in the module's memory,
     /// one dependent lookup fewer per sample), and sampled inline in the exported methods: the
     /// common case of sampling point by point.
     Perlin(TabledPerlin),

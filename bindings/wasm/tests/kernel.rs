@@ -85,5 +85,6 @@ fn simd_point_kernel_equals_the_portable_kernel() {
         assert!(point_equals_batch::<_, 4>(&perlin, &xs) >= 39_000);
         assert!(point_equals_batch::<_, 2>(&tabled, &xs) >= 39_000);
         assert!(point_equals_batch::<_, 3>(&tabled, &xs) >= 39_000);
+        assert!(point_equals_batch::<_, 4>(&tabled, &xs) >= 39_000);
     }
 }

@@ -50,8 +50,9 @@ use portable as selected;
 //   where the target has no kernel or leaves the point to the shared one (non-finite or beyond
 //   ±2³¹).
 // * `PerlinPairs`: a seed's table for the point kernels, built by `const fn` from the doubled
-//   permutation (16 KiB where there is a kernel, empty where there is none), and
-//   `perlin2_paired`, `perlin3_paired`: the kernels reading it, one dependent lookup fewer.
+//   permutation (32 KiB where there is a kernel, empty where there is none), and
+//   `perlin2_paired`, `perlin3_paired`, `perlin4_paired`: the kernels reading it, one
+//   dependent lookup fewer (and in 4D no permutation lookup at the last level).
 // * `OCTAVES_AS_LANES`: whether a sum of octaves is faster as one lattice body over the octaves
 //   as lanes (vector units) than as one body per octave (scalar cores, where the lanes' values
 //   spill to the stack). Either gives the same bits.
@@ -59,6 +60,7 @@ use portable as selected;
 //   square roots are correctly rounded, so a vector instruction gives libm's bits.
 pub(crate) use perlin_point::{
     PERLIN_POINT, PerlinPairs, perlin2, perlin2_paired, perlin3, perlin3_paired, perlin4,
+    perlin4_paired,
 };
 // * `SIMPLEX_CORNERS`: whether this target has `simplex_corners` (so callers skip the
 //   conversions where it has not).

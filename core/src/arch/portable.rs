@@ -47,6 +47,18 @@ pub(crate) fn perlin3_paired(
     None
 }
 
+#[inline]
+pub(crate) fn perlin4_paired(
+    _: &[u8; 512],
+    _: &PerlinPairs,
+    _: f32,
+    _: f32,
+    _: f32,
+    _: f32,
+) -> Option<f32> {
+    None
+}
+
 /// [`Real::sqrt`](crate::Real::sqrt) of each lane, one at a time.
 #[inline]
 pub(crate) fn sqrt_lanes(x: &mut [f32; crate::batch::LANES]) {

@@ -13,7 +13,10 @@
 //! vector with no index arithmetic ([`HALVES`]: x and y in 2D, x and y, then z and w in 4D);
 //! one shuffle more per pair of vectors splits them by axis. In 3D the
 //! gradients of two neighbouring hash values come from one row of a table indexed by both
-//! hashes' low nibbles ([`PAIR_ROWS`]), already split by axis.
+//! hashes' low nibbles ([`PAIR_ROWS`]), already split by axis. A seed's own table
+//! ([`PerlinPairs`], which [`TabledPerlin`](crate::lattice::TabledPerlin) holds) composes
+//! those rows with the permutation, so that the last level of the chain reads gradients at the
+//! index it forms, without reading the permutation there.
 //!
 //! Every lane computes the operations of the shared kernel on the same numbers in the same order
 //! (IEEE `+ − ×`, no fused multiply-add), so the results are those of [`sample_lattice`] bit for
@@ -112,6 +115,18 @@ pub(crate) fn perlin4(p: &[u8; 512], x: f32, y: f32, z: f32, w: f32) -> Option<f
 }
 
 #[inline]
+pub(crate) fn perlin4_paired(
+    p: &[u8; 512],
+    pairs: &PerlinPairs,
+    x: f32,
+    y: f32,
+    z: f32,
+    w: f32,
+) -> Option<f32> {
+    Kernel { p, pairs }.sample4::<F32x4>(x, y, z, w)
+}
+
+#[inline]
 pub(crate) fn perlin2_paired(p: &[u8; 512], pairs: &PerlinPairs, x: f32, y: f32) -> Option<f32> {
     Kernel { p, pairs }.sample2::<F32x4>(x, y)
 }
@@ -128,7 +143,8 @@ pub(crate) fn perlin3_paired(
 }
 
 /// Where the kernel finds the gradients of `p[i]` and `p[i + 1]`, split by axis:
-/// `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]`.
+/// `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₁z, 0, 0]` (2D and 3D, `GRAD3`), and the 4D gradients
+/// (`Grad4`) as `[g₀ₓ, g₀ᵧ, g₁ₓ, g₁ᵧ]` and `[g₀z, g₀w, g₁z, g₁w]`.
 trait GradientPairs {
     fn pair(&self, p: &[u8; 512], i: usize) -> &[[f32; 4]; 2];
 
@@ -137,6 +153,10 @@ trait GradientPairs {
     fn xy<V: Lanes>(&self, p: &[u8; 512], i: usize) -> V {
         V::load(&self.pair(p, i)[0])
     }
+
+    /// The 4D gradients of `p[i]` and `p[i + 1]`: their x and y components, then their z and
+    /// w components.
+    fn four<V: Lanes>(&self, p: &[u8; 512], i: usize) -> (V, V);
 }
 
 /// The static table: look up `p[i]` and `p[i + 1]`, then their row.
@@ -154,6 +174,14 @@ impl GradientPairs for PairRows {
     fn xy<V: Lanes>(&self, p: &[u8; 512], i: usize) -> V {
         let [a, b] = [p[i], p[i + 1]].map(|h| &HALVES.0[XY + usize::from(h)]);
         V::from_halves(a, b)
+    }
+
+    /// From [`HALVES`]' 4D sections, at the hash bytes.
+    #[inline]
+    fn four<V: Lanes>(&self, p: &[u8; 512], i: usize) -> (V, V) {
+        let [a, b] = [p[i], p[i + 1]].map(usize::from);
+        let half = |at: usize| V::from_halves(&HALVES.0[at + a], &HALVES.0[at + b]);
+        (half(XY4), half(ZW4))
     }
 }
 
@@ -192,34 +220,51 @@ const fn packed(a: f32, b: f32) -> f64 {
     f64::from_bits((b.to_bits() as u64) << 32 | a.to_bits() as u64)
 }
 
-/// A seed's table, `PAIR_ROWS` composed with the permutation: entry `b` (`b < 512`, an index of
-/// the doubled permutation `p`) is the row of `p[b]` and `p[b + 1]`. One lookup replaces two
-/// permutation lookups and a row lookup, and takes a level off the chain of dependent loads:
-/// `p[p[x] + y]` and its neighbour in 2D, `p[p[p[x] + y] + z]` and its neighbour in 3D.
-/// 16 KiB, built by `const fn`; a caller opts into it with
+/// A seed's tables, the gradients composed with the permutation: entry `b` (`b < 512`, an
+/// index of the doubled permutation `p`) holds the gradients of `p[b]` and `p[b + 1]`, for 2D
+/// and 3D (`PAIR_ROWS`' row) and for 4D (`Grad4`'s rows, as [`GradientPairs::four`] gives
+/// them). One lookup replaces two permutation lookups and their gradients' lookups, and takes
+/// a level off the chain of dependent loads: `p[p[x] + y]` and its neighbour in 2D,
+/// `p[p[p[x] + y] + z]` and its neighbour in 3D, `p[p[p[p[x] + y] + z] + w]` and its
+/// neighbour in 4D. 16 KiB each, built by `const fn`; a caller opts into them with
 /// [`TabledPerlin`](crate::lattice::TabledPerlin).
 #[derive(Clone)]
 #[repr(align(32))]
-pub(crate) struct PerlinPairs([[[f32; 4]; 2]; 512]);
+pub(crate) struct PerlinPairs {
+    three: [[[f32; 4]; 2]; 512],
+    four: [[[f32; 4]; 2]; 512],
+}
 
 impl PerlinPairs {
     pub(crate) const fn new(p: &[u8; 512]) -> Self {
-        let mut pairs = [[[0.0f32; 4]; 2]; 512];
+        let mut three = [[[0.0f32; 4]; 2]; 512];
+        let mut four = [[[0.0f32; 4]; 2]; 512];
         let mut b = 0;
         while b < 512 {
             // Entry 511 is never read (b ≤ 255 + 255); its p[b + 1] wraps as p does.
-            let row = (p[b] & 15) as usize | ((p[(b + 1) & 511] & 15) as usize) << 4;
-            pairs[b] = PAIR_ROWS.0[row];
+            let (g, h) = (p[b], p[(b + 1) & 511]);
+            three[b] = PAIR_ROWS.0[(g & 15) as usize | ((h & 15) as usize) << 4];
+            let (g, h) = (
+                Grad4::<f32>::TABLE[(g & 31) as usize],
+                Grad4::<f32>::TABLE[(h & 31) as usize],
+            );
+            four[b] = [[g[0], g[1], h[0], h[1]], [g[2], g[3], h[2], h[3]]];
             b += 1;
         }
-        Self(pairs)
+        Self { three, four }
     }
 }
 
 impl GradientPairs for PerlinPairs {
     #[inline]
     fn pair(&self, _: &[u8; 512], i: usize) -> &[[f32; 4]; 2] {
-        &self.0[i]
+        &self.three[i]
+    }
+
+    #[inline]
+    fn four<V: Lanes>(&self, _: &[u8; 512], i: usize) -> (V, V) {
+        let [xy, zw] = &self.four[i];
+        (V::load(xy), V::load(zw))
     }
 }
 
@@ -344,7 +389,7 @@ impl<G: GradientPairs> Kernel<'_, G> {
         let [dy0, dy1] = [u.broadcast::<2>(), u.broadcast::<3>()];
         let dots = |b: usize, dx: V, dy: V| {
             let (c0, c1) = c(b);
-            self.dots4([c0, c0 + 1, c1, c1 + 1], dx, dy, dz, dw)
+            self.dots4(c0, c1, dx, dy, dz, dw)
         };
         // The lerps in the shared kernel's order: along x, y, z, then w.
         let sx = s.broadcast::<0>();
@@ -355,17 +400,14 @@ impl<G: GradientPairs> Kernel<'_, G> {
         Some(finish(q, s.broadcast::<3>()))
     }
 
-    /// The dot products of the 4D gradients of `p[i]` for the four hash inputs `i` with the
-    /// offsets, one corner per lane, in the shared kernel's order
+    /// The dot products of the 4D gradients of hash inputs `a`, `a + 1`, `b`, `b + 1` with
+    /// the offsets, one corner per lane, in the shared kernel's order
     /// `((d_x·g_x + d_y·g_y) + d_z·g_z) + d_w·g_w` (its zero term changes at most the sign of a
     /// zero, which [`finish`] canonicalises).
     #[inline]
-    fn dots4<V: Lanes>(&self, i: [usize; 4], dx: V, dy: V, dz: V, dw: V) -> V {
-        let [h0, h1, h2, h3] = i.map(|i| self.p(i));
-        let half =
-            |at: usize, a: usize, b: usize| V::from_halves(&HALVES.0[at + a], &HALVES.0[at + b]);
-        let (xy01, xy23) = (half(XY4, h0, h1), half(XY4, h2, h3));
-        let (zw01, zw23) = (half(ZW4, h0, h1), half(ZW4, h2, h3));
+    fn dots4<V: Lanes>(&self, a: usize, b: usize, dx: V, dy: V, dz: V, dw: V) -> V {
+        let (xy01, zw01) = self.pairs.four::<V>(self.p, a);
+        let (xy23, zw23) = self.pairs.four::<V>(self.p, b);
         let (gx, gy) = (xy01.evens(xy23), xy01.odds(xy23));
         let (gz, gw) = (zw01.evens(zw23), zw01.odds(zw23));
         dx.mul(gx).add(dy.mul(gy)).add(dz.mul(gz)).add(dw.mul(gw))

@@ -144,15 +144,17 @@ impl Default for Perlin {
 /// [`Perlin`] with a per-seed table for the point kernel: the same noise bit for bit, faster
 /// where the target's vector kernel can use the table, at the cost of its size.
 ///
-/// On x86-64 (and in WebAssembly with `simd128`), 2D and 3D point sampling in `f32` look up the gradients of two neighbouring
-/// corners in one 16 KiB table (the gradients that Perlin's `grad` picks for `p[b]` and
-/// `p[b + 1]`, for every `b`), one dependent lookup fewer than [`Perlin`], whose kernel first
-/// reads `p[b]` and `p[b + 1]` and then static gradient rows. How much that saves depends on
-/// the core: on a recent Intel core a 3D point sample about 10% and a 2D one about 3%, on an
-/// AMD Zen 4 about 2% and 10% (`bench/README.md`). Other number types,
-/// dimensions and targets sample exactly as [`Perlin`]; there the table is empty.
+/// On x86-64 (and in WebAssembly with `simd128`), 2D, 3D and 4D point sampling in `f32` look
+/// up the gradients of two neighbouring corners in one entry of a table (the gradients that
+/// Perlin's `grad` picks for `p[b]` and `p[b + 1]`, for every `b`: 16 KiB for 2D and 3D,
+/// 16 KiB for 4D), one dependent lookup fewer than [`Perlin`], whose kernel first reads
+/// `p[b]` and `p[b + 1]` and then static gradient tables. How much that saves depends on the
+/// core and the dimension: on an AMD Zen 4 a 2D point sample about 4%, a 3D one about 13% and
+/// a 4D one about 18% (on a recent Intel core 3% and 10% in 2D and 3D; `bench/README.md`).
+/// Other number types, dimensions and targets sample exactly as [`Perlin`]; there the table
+/// is empty.
 ///
-/// * **Size**: 16.5 KiB where the vector kernel is (x86-64, WebAssembly with `simd128`), 512
+/// * **Size**: 32.5 KiB where the vector kernel is (x86-64, WebAssembly with `simd128`), 512
 ///   bytes elsewhere. Build it once (`static` works: `new` is
 ///   `const`) and share it.
 /// * Everything else (range, gradients, periodic wrapping, batches) is [`Perlin`]'s.
@@ -277,16 +279,16 @@ fn paired3(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z]: [f32; 3]) -> O
     arch::perlin3_paired(perlin.doubled(), pairs, x, y, z)
 }
 
-/// The 4D point kernel, which has no table (a 4D pair table would be 32 KiB).
+/// The 4D point kernel with the table.
 #[inline]
-fn plain4(perlin: &Perlin, _: &arch::PerlinPairs, [x, y, z, w]: [f32; 4]) -> Option<f32> {
-    arch::perlin4(perlin.doubled(), x, y, z, w)
+fn paired4(perlin: &Perlin, pairs: &arch::PerlinPairs, [x, y, z, w]: [f32; 4]) -> Option<f32> {
+    arch::perlin4_paired(perlin.doubled(), pairs, x, y, z, w)
 }
 
 forward_to_perlin!(1);
 forward_to_perlin!(2, paired2);
 forward_to_perlin!(3, paired3);
-forward_to_perlin!(4, plain4);
+forward_to_perlin!(4, paired4);
 lattice_noise_impls!(TabledPerlin, [], |_, d| half_dims(d));
 crate::noise::inherent_amplitude_bound!(TabledPerlin, []);
 
