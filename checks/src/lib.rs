@@ -292,7 +292,7 @@ fn composed() -> [(&'static str, Spec, usize, i32); COMPOSED] {
 /// kernels' `exp` and `cos`, [`TabledPerlin`] (Perlin's values through its table),
 /// OpenSimplex2 and OpenSimplex2S in each orientation with gradients, and the textures'
 /// patterns, colour maps and filtered dots (their values are also among the descriptions).
-const OTHER: [&str; 14] = [
+const OTHER: [&str; 15] = [
     "gabor surface",
     "gabor filtered",
     "multiband projected",
@@ -304,6 +304,7 @@ const OTHER: [&str; 14] = [
     "exp and cos",
     "tabled perlin 2D",
     "tabled perlin 3D",
+    "tabled perlin 4D",
     "simplex gradients, curl, flow, warp, mixed mnoise",
     "opensimplex2, opensimplex2s",
     "textures",
@@ -485,6 +486,7 @@ fn not_described<R: Bits>(out: &mut [u32]) {
     let tabled = TabledPerlin::new(1);
     push(checksum::<R, 2>(&tabled, 200));
     push(checksum::<R, 3>(&tabled, 200));
+    push(checksum::<R, 4>(&tabled, 200));
     push(vector_checksum::<R>());
     push(open_simplex_checksum::<R>());
     push(texture_checksum::<R>());
