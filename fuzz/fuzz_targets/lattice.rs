@@ -158,8 +158,8 @@ fn cellular(seed: u32, bits: [u32; 3]) -> Spec {
         .expect("cellular settings in range")
 }
 
-/// Perlin with its per-seed table is Perlin, bit for bit, where the table's kernel runs (f32 2D
-/// and 3D; on x86-64 a different kernel from `Perlin`'s).
+/// Perlin with its per-seed table is Perlin, bit for bit, where the table's kernel runs (f32 2D,
+/// 3D and 4D; on x86-64 a different kernel from `Perlin`'s).
 fn tabled(seed: u32, floats: [f32; 4]) {
     let (perlin, tabled) = (Perlin::new(seed), TabledPerlin::new(seed));
     let [x, y, z, _] = floats;
@@ -167,6 +167,8 @@ fn tabled(seed: u32, floats: [f32; 4]) {
     assert_eq!(a.to_bits(), b.to_bits(), "2D {x} {y}");
     let (a, b): (f32, f32) = (perlin.sample([x, y, z]), tabled.sample([x, y, z]));
     assert_eq!(a.to_bits(), b.to_bits(), "3D {x} {y} {z}");
+    let (a, b): (f32, f32) = (perlin.sample(floats), tabled.sample(floats));
+    assert_eq!(a.to_bits(), b.to_bits(), "4D {floats:?}");
 }
 
 /// mNoise from Olano's table is the computed mNoise, bit for bit, in 2D–4D in f32 and I16F16,
