@@ -141,8 +141,8 @@ impl Default for Perlin {
     }
 }
 
-/// [`Perlin`] with a per-seed table for the point kernel: the same noise bit for bit, faster
-/// where the target's vector kernel can use the table, at the cost of its size.
+/// [`Perlin`] with per-seed tables for the point kernels: the same noise bit for bit, faster
+/// where the target's vector kernel can use the tables, at the cost of their size.
 ///
 /// On x86-64 (and in WebAssembly with `simd128`), 2D, 3D and 4D point sampling in `f32` look
 /// up the gradients of two neighbouring corners in one entry of a table (the gradients that
@@ -151,8 +151,8 @@ impl Default for Perlin {
 /// `p[b]` and `p[b + 1]` and then static gradient tables. How much that saves depends on the
 /// core and the dimension: on an AMD Zen 4 a 2D point sample about 4%, a 3D one about 13% and
 /// a 4D one about 18% (on a recent Intel core 3% and 10% in 2D and 3D; `bench/README.md`).
-/// Other number types, dimensions and targets sample exactly as [`Perlin`]; there the table
-/// is empty.
+/// Other number types, dimensions and targets sample exactly as [`Perlin`]; there the tables
+/// are empty.
 ///
 /// * **Size**: 32.5 KiB where the vector kernel is (x86-64, WebAssembly with `simd128`), 512
 ///   bytes elsewhere. Build it once (`static` works: `new` is
