@@ -221,13 +221,25 @@ impl Layout {
         })
     }
 
-    /// Point evaluation of `noise` projected along `normal` over the grid, in 3D (no batch
-    /// path: projection has none).
+    /// Point evaluation of `noise` projected along `normal` over the grid, in 3D.
     pub fn projected<No: ProjectedNoise<f32> + 'static>(self, noise: No, normal: [f32; 3]) -> Run {
         Box::new(move |rows, out| {
             self.points(rows, out, |x, y| {
                 noise.sample_projected(at::<3>(x, y), normal)
             })
+        })
+    }
+
+    /// [`ProjectedNoise::fill_grid_projected`] of `noise` along `normal` over the grid.
+    pub fn projected_batch<No: ProjectedNoise<f32> + 'static>(
+        self,
+        noise: No,
+        normal: [f32; 3],
+    ) -> Run {
+        Box::new(move |rows, out| {
+            noise
+                .fill_grid_projected(&self.grid::<3>(rows), normal, &mut out[..rows * N])
+                .unwrap()
         })
     }
 
@@ -319,6 +331,12 @@ pub fn workload(function: &str, implementation: &str, layout: Layout) -> Option<
         }
         ("wavelet-projected-oblique", "bandnoise") => {
             l.projected(Wavelet::new(0, &TILE3), [0.48, 0.6, 0.64])
+        }
+        ("wavelet-projected-axis", "bandnoise-batch") => {
+            l.projected_batch(Wavelet::new(0, &TILE3), [0.0, 0.0, 1.0])
+        }
+        ("wavelet-projected-oblique", "bandnoise-batch") => {
+            l.projected_batch(Wavelet::new(0, &TILE3), [0.48, 0.6, 0.64])
         }
         ("multiband-2d", "bandnoise") => l.point::<_, 2>(multiband()),
         ("multiband-2d", "bandnoise-batch") => l.batch::<_, 2>(multiband()),

@@ -270,13 +270,23 @@ pub(crate) fn fill_grid_pointwise<N: Noise<R, D> + ?Sized, R: Real, const D: usi
     grid: &Grid<R, D>,
     out: &mut [R],
 ) -> Result<(), Error> {
+    fill_grid_by(grid, out, |p| noise.sample(p))
+}
+
+/// Fills `out` over `grid` with `sample` of each point, row by row, each row's points
+/// computed as [`Grid::lanes`] computes them (so as [`Grid::point`]).
+pub(crate) fn fill_grid_by<R: Real, const D: usize>(
+    grid: &Grid<R, D>,
+    out: &mut [R],
+    sample: impl Fn([R; D]) -> R,
+) -> Result<(), Error> {
     for_each_row(grid, out, |start, row_out| {
         let mut p = start;
         for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
             let xs = grid.lanes(0, c * LANES);
             for (o, &x) in chunk.iter_mut().zip(&xs) {
                 p[0] = x;
-                *o = noise.sample(p);
+                *o = sample(p);
             }
         }
     })

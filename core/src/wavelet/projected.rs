@@ -36,6 +36,8 @@ use super::band::{
 };
 use super::window::{WIDTH, Window};
 
+mod rows;
+
 /// The quadratic B-spline of width 3 on `[0, 3)` (erratum 7): `t²/2`, `3/4 − (t − 3/2)²`,
 /// `(3 − t)²/2`, 0 elsewhere.
 ///
@@ -204,6 +206,20 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
 
     fn projected_bound(&self) -> f32 {
         Wavelet::projected_bound(self)
+    }
+
+    /// The band over `grid` along one normal, bit for bit as
+    /// [`sample_projected`](ProjectedNoise::sample_projected) at each point: the normal is
+    /// normalised once, and along an axis-aligned normal each grid row resolves its y and z
+    /// weights and blocks once and sums runs of samples within one coefficient together
+    /// (`projected/rows.rs`).
+    fn fill_grid_projected(
+        &self,
+        grid: &crate::batch::Grid<R, 3>,
+        normal: [R; 3],
+        out: &mut [R],
+    ) -> Result<(), crate::Error> {
+        self.fill_grid_projected_unit(grid, unit_normal(normal), out)
     }
 }
 
