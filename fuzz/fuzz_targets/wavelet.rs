@@ -5,10 +5,12 @@
 //! slopes; any finite non-zero normal, however large
 //! or small, is normalised to its own direction, and its power-of-two multiples give the same
 //! bits; filtered by any footprint, and as infinite noise at any footprint, values stay within
-//! the bounds and a NaN footprint is none.
+//! the bounds and a NaN footprint is none; projected grids along one normal are the points,
+//! bit for bit.
 #![no_main]
 
 use arbitrary::Arbitrary;
+use bandnoise::batch::Grid;
 use bandnoise::wavelet::{
     Bands, Distribution, Multiband, TILE2_I16, TILE3_I16, Tiling, Wavelet, unit_normal,
 };
@@ -93,6 +95,23 @@ fuzz_target!(|input: Input| {
     same(band3.sample(p), band3.sample(p0));
     same(band2.sample([p[0], p[1]]), band2.sample([p0[0], p0[1]]));
     same(proj, band3.sample_projected(p0, n));
+    // Grids along one normal (an axis-aligned one takes the rows' lanes) are the points.
+    let grid = Grid::new(p, dx, [10, 3, 2]);
+    let mut out = [0.0f32; 60];
+    for normal in [[0.0, 0.0, n[2]], [n[0], 0.0, 0.0], n] {
+        band3.fill_grid_projected(&grid, normal, &mut out).unwrap();
+        for (i, &v) in out.iter().enumerate() {
+            let at = grid.point([i % 10, i / 10 % 3, i / 30]);
+            same(v, band3.sample_projected(at, normal));
+        }
+    }
+    let gq = Grid::new(q, [dq[0], dq[1], dq[2]], [10, 3, 2]);
+    let mut outq = [I16F16::ZERO; 60];
+    band3.fill_grid_projected(&gq, [nq[0], I16F16::ZERO, I16F16::ZERO], &mut outq).unwrap();
+    for (i, &v) in outq.iter().enumerate() {
+        let at = gq.point([i % 10, i / 10 % 3, i / 30]);
+        assert_eq!(v, band3.sample_projected(at, [nq[0], I16F16::ZERO, I16F16::ZERO]));
+    }
 
     let distribution = if input.uniform {
         Distribution::Uniform

@@ -91,20 +91,18 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             return None;
         }
         let two = local + len > 2 * n - h;
-        let mut w = [[R::ZERO; SPAN]; 2];
-        if two {
-            let at = zone_offset(local, n, h);
-            for (i, &t) in t.iter().enumerate().take(len.min(SPAN)) {
-                let b = super::bspline(t);
-                for (s, omega) in crossing::<R>(at + i, h).into_iter().enumerate() {
-                    w[s][i] = b.mul_rn(omega);
-                }
-            }
-        } else {
-            for (i, &t) in t.iter().enumerate().take(len.min(SPAN)) {
-                w[0][i] = super::bspline(t);
+        let [mut first, mut next] = [[R::ZERO; SPAN]; 2];
+        let at = zone_offset(local, n, h);
+        let slots = first.iter_mut().zip(&mut next);
+        for (i, ((first, next), &t)) in slots.zip(&t).enumerate().take(len) {
+            let b = super::bspline(t);
+            if two {
+                [*first, *next] = crossing::<R>(at + i, h).map(|omega| b.mul_rn(omega));
+            } else {
+                *first = b;
             }
         }
+        let w = [first, next];
         Some(Axis {
             block,
             local,
@@ -130,7 +128,10 @@ impl<T: TileData<3>> Wavelet<'_, T> {
             });
         };
         for_each_row(grid, out, |start, row_out| {
-            let across = [1, 2].map(|a| self.projected_axis_of(start[a], a, nrm, normal));
+            let across = [
+                self.projected_axis_of(start[1], 1, nrm, normal),
+                self.projected_axis_of(start[2], 2, nrm, normal),
+            ];
             for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
                 let xs = grid.lanes(0, c * LANES);
                 let mut values = [R::ZERO; LANES];
@@ -142,11 +143,11 @@ impl<T: TileData<3>> Wavelet<'_, T> {
                         _ => self.projected_lanes::<R, 2>(&xs, row, [y, z], nrm, v),
                     }
                 }
-                for (l, (o, &v)) in chunk.iter_mut().zip(&values).enumerate() {
+                for (o, (&v, &x)) in chunk.iter_mut().zip(values.iter().zip(&xs)) {
                     *o = match across {
                         [Some(_), Some(_)] => v,
                         _ => {
-                            self.projected_fast::<R, false>([xs[l], start[1], start[2]], nrm)
+                            self.projected_fast::<R, false>([x, start[1], start[2]], nrm)
                                 .0
                         }
                     };

@@ -171,6 +171,12 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
         if m.fill_grid(&grid3, &mut out).is_ok() {
             add(out.get(black_box(41)).copied().unwrap_or(R::ZERO));
         }
+        // A projected grid along an axis (`projected/rows.rs`: lanes in groups) and not.
+        for normal in [[R::ZERO, R::ZERO, p[3]], [p[3], p[2], p[1]]] {
+            if w3.fill_grid_projected(&grid3, normal, &mut out).is_ok() {
+                add(out.get(black_box(17)).copied().unwrap_or(R::ZERO));
+            }
+        }
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
     let period = black_box([7u32, 65536, 1]);
