@@ -15,7 +15,9 @@
 //! (SSE2 on x86-64, `simd128` on wasm32, Helium or nothing on microcontrollers, where the same
 //! code simply runs as loops). Fractal sums call their noise's `sample_lanes` once per octave.
 //! Wavelet noise resolves a block's orientation once for all lanes and gathers each lane's
-//! coefficients. Noises without an override (multiband, projected) evaluate lane by lane.
+//! coefficients. Noises without an override (multiband) evaluate lane by lane. Projected
+//! noise has its own grid method, [`ProjectedNoise::fill_grid_projected`](crate::ProjectedNoise::fill_grid_projected)
+//! (one normal for the whole grid).
 //!
 //! On a grid a batch is several times faster than point sampling, even where the point path is
 //! a hand-vectorised kernel (Perlin on x86-64): per-axis work is shared across a row, and a

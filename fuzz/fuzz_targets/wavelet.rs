@@ -153,6 +153,13 @@ fuzz_target!(|input: Input| {
                 "{g:?}"
             );
             let _: (I16F16, _) = m.sample_projected_with_gradient(q, nq);
+            // Its grids along an axis are its points.
+            let axis = [0.0, n[1], 0.0];
+            m.fill_grid_projected(&grid, axis, &mut out).unwrap();
+            for (i, &v) in out.iter().enumerate() {
+                let at = grid.point([i % 10, i / 10 % 3, i / 30]);
+                same(v, m.sample_projected(at, axis));
+            }
             let f = m.sample_filtered(p, dx, dy);
             assert!(f.is_finite() && f.abs() <= bound, "{f} > {bound}");
             let z = m.sample_infinite(p, dx[0]);

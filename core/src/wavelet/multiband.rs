@@ -21,7 +21,7 @@
 
 use heapless::Vec;
 
-use crate::batch::{Grid, for_each_rows};
+use crate::batch::{Grid, LANES, for_each_rows};
 use crate::{Error, Noise, ProjectedNoise, Real};
 
 use super::band::{GROUP, TileData, Tiling, Wavelet};
@@ -537,6 +537,45 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Multiband<'_, T> {
 
     fn projected_bound(&self) -> f32 {
         Multiband::projected_bound(self)
+    }
+
+    /// Multiband noise over `grid` along one normal, bit for bit as
+    /// [`sample_projected`](ProjectedNoise::sample_projected) at each point: the normal and
+    /// its gain are computed once, and each band samples 16 points of a row at a time
+    /// (along an axis-aligned normal sharing the row's work, `projected/rows.rs`), summed
+    /// lane by lane in the points' order.
+    fn fill_grid_projected(
+        &self,
+        grid: &Grid<R, 3>,
+        normal: [R; 3],
+        out: &mut [R],
+    ) -> Result<(), Error> {
+        let n = super::projected::unit_normal(normal);
+        let gain = super::projected::gain_unit(n);
+        let first = self.bands.first;
+        crate::batch::for_each_row(grid, out, |start, row_out| {
+            for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
+                let xs = grid.lanes(0, c * LANES);
+                let mut sum = [R::ZERO; LANES];
+                for (i, w) in self.scaled.iter().enumerate() {
+                    // The points' sum (`sum_weighted`): bands of weight 0 left out.
+                    let (band, w) = (first + i as i32, w[2]);
+                    if w == 0.0 {
+                        continue;
+                    }
+                    let (_, to_band) = self.band_map::<R, 3>(band);
+                    let q = xs.map(|x| to_band(x, 0));
+                    let mut v = [R::ZERO; LANES];
+                    let row = [to_band(start[1], 1), to_band(start[2], 2)];
+                    self.band.projected_row(&q, row, n, &mut v);
+                    let weight = R::from_f32(w);
+                    for (sum, v) in sum.iter_mut().zip(v) {
+                        *sum = sum.saturating_add(weight.mul_rn(v.mul_rn(gain)));
+                    }
+                }
+                crate::batch::store_lanes(chunk, &sum.map(|s| self.finish(s).0));
+            }
+        })
     }
 }
 

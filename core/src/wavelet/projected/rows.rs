@@ -19,7 +19,7 @@
 //! range, tiles narrower than the support) are sampled as points.
 
 use super::{ACROSS, ALONG, SPAN, crossing, span, zone_offset};
-use crate::batch::{Grid, LANES, for_each_row};
+use crate::batch::{Grid, LANES, for_each_row, store_lanes};
 use crate::wavelet::band::{Placement, TileData, Wavelet, first_block};
 use crate::wavelet::window::WIDTH;
 use crate::{Error, Real};
@@ -112,48 +112,53 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     }
 
     /// [`ProjectedNoise::fill_grid_projected`] along the unit normal `nrm`
-    /// ([`unit_normal`](super::unit_normal)'s): rows along an axis-aligned normal by runs of
-    /// lanes (module docs), other normals point by point.
+    /// ([`unit_normal`](super::unit_normal)'s): rows along an axis-aligned normal by groups
+    /// of lanes (module docs), other normals point by point.
     pub(crate) fn fill_grid_projected_unit<R: Real>(
         &self,
         grid: &Grid<R, 3>,
         nrm: [R; 3],
         out: &mut [R],
     ) -> Result<(), Error> {
-        let zeros = nrm.iter().filter(|&&x| x == R::ZERO).count();
-        let normal = nrm.iter().position(|&x| x != R::ZERO);
-        let Some(normal) = normal.filter(|&k| zeros == 2 && nrm[k].abs() <= R::ONE) else {
+        if axis_of(nrm).is_none() {
             return crate::batch::fill_grid_by(grid, out, |p| {
                 self.projected_fast::<R, false>(p, nrm).0
             });
-        };
+        }
         for_each_row(grid, out, |start, row_out| {
-            let across = [
-                self.projected_axis_of(start[1], 1, nrm, normal),
-                self.projected_axis_of(start[2], 2, nrm, normal),
-            ];
             for (c, chunk) in row_out.chunks_mut(LANES).enumerate() {
-                let xs = grid.lanes(0, c * LANES);
                 let mut values = [R::ZERO; LANES];
-                if let [Some(y), Some(z)] = across {
-                    let (row, v) = ([start[1], start[2]], &mut values);
-                    match normal {
-                        0 => self.projected_lanes::<R, 0>(&xs, row, [y, z], nrm, v),
-                        1 => self.projected_lanes::<R, 1>(&xs, row, [y, z], nrm, v),
-                        _ => self.projected_lanes::<R, 2>(&xs, row, [y, z], nrm, v),
-                    }
-                }
-                for (o, (&v, &x)) in chunk.iter_mut().zip(values.iter().zip(&xs)) {
-                    *o = match across {
-                        [Some(_), Some(_)] => v,
-                        _ => {
-                            self.projected_fast::<R, false>([x, start[1], start[2]], nrm)
-                                .0
-                        }
-                    };
-                }
+                let xs = grid.lanes(0, c * LANES);
+                self.projected_row(&xs, [start[1], start[2]], nrm, &mut values);
+                store_lanes(chunk, &values);
             }
         })
+    }
+
+    /// The projected band along the unit normal `nrm` at the `LANES` points of a grid row,
+    /// `xs` along x at `row` along y and z, into `values`: the point samples' bits.
+    pub(crate) fn projected_row<R: Real>(
+        &self,
+        xs: &[R; LANES],
+        row: [R; 2],
+        nrm: [R; 3],
+        values: &mut [R; LANES],
+    ) {
+        if let Some(normal) = axis_of(nrm) {
+            let y = self.projected_axis_of(row[0], 1, nrm, normal);
+            let z = self.projected_axis_of(row[1], 2, nrm, normal);
+            if let (Some(y), Some(z)) = (y, z) {
+                match normal {
+                    0 => self.projected_lanes::<R, 0>(xs, row, [y, z], nrm, values),
+                    1 => self.projected_lanes::<R, 1>(xs, row, [y, z], nrm, values),
+                    _ => self.projected_lanes::<R, 2>(xs, row, [y, z], nrm, values),
+                }
+                return;
+            }
+        }
+        for (v, &x) in values.iter_mut().zip(xs) {
+            *v = self.projected_fast::<R, false>([x, row[0], row[1]], nrm).0;
+        }
     }
 
     /// The projected band at `LANES` points of one row, `xs` along x at `row` along y and z,
@@ -297,6 +302,15 @@ impl<T: TileData<3>> Wavelet<'_, T> {
     }
 }
 
+/// The axis of a unit normal that the point's axis path takes (two components zero, the
+/// third at most 1 in magnitude), as [`Wavelet::projected_along`] tests it.
+#[inline]
+fn axis_of<R: Real>(nrm: [R; 3]) -> Option<usize> {
+    let normal = nrm.iter().position(|&x| x != R::ZERO)?;
+    let zeros = nrm.iter().filter(|&&x| x == R::ZERO).count();
+    (zeros == 2 && nrm[normal % 3].abs() <= R::ONE).then_some(normal)
+}
+
 /// The most offsets along x a group of lanes sums: its lanes' supports (3 offsets across the
 /// normal, 6 along it) start within `EXTENT − span` coefficients of each other.
 const EXTENT: usize = 8;
@@ -304,7 +318,9 @@ const EXTENT: usize = 8;
 #[cfg(test)]
 mod tests {
     use crate::batch::Grid;
-    use crate::wavelet::{TILE3, Tile3, TileData, Tiling, Wavelet, unit_normal};
+    use crate::wavelet::{
+        Bands, Distribution, Multiband, TILE3, Tile3, TileData, Tiling, Wavelet, unit_normal,
+    };
     use crate::{I16F16, ProjectedNoise, Real};
 
     static TILE4: Tile3<4> = Tile3::generate(3);
@@ -363,7 +379,7 @@ mod tests {
         ]
     }
 
-    fn check<R: Real, T: TileData<3>>(band: &Wavelet<'_, T>) -> usize {
+    fn check<R: Real, N: ProjectedNoise<R>>(band: &N) -> usize {
         let mut compared = 0;
         for normal in NORMALS.map(|n| n.map(R::from_f32)) {
             for grid in grids::<R>() {
@@ -396,7 +412,7 @@ mod tests {
     #[test]
     fn grids_are_the_point_samples() {
         fn all_types<T: TileData<3>>(band: &Wavelet<'_, T>) -> usize {
-            check::<f32, T>(band) + check::<f64, T>(band) + check::<I16F16, T>(band)
+            check::<f32, _>(band) + check::<f64, _>(band) + check::<I16F16, _>(band)
         }
         let mut compared = 0;
         for tiling in [Tiling::Blended, Tiling::Varied, Tiling::Periodic] {
@@ -406,6 +422,18 @@ mod tests {
             compared += all_types(&Wavelet::new(5, &TILE16).with_tiling(tiling));
         }
         assert!(compared > 100_000, "{compared}");
+    }
+
+    /// Multiband noise's grids are its point samples too (each band's rows through the
+    /// lanes, a band of weight 0 left out, both distributions).
+    #[test]
+    fn multiband_grids_are_the_point_samples() {
+        let bands = Bands::new(-1, &[0.5, 0.0, 1.0, 0.25]).unwrap();
+        for distribution in [Distribution::Gaussian, Distribution::Uniform] {
+            let m = Multiband::new(2, &TILE3, bands.clone(), distribution);
+            let compared = check::<f32, _>(&m) + check::<f64, _>(&m) + check::<I16F16, _>(&m);
+            assert!(compared > 10_000, "{compared}");
+        }
     }
 
     /// The rows of the default tile along an axis take the row path (so the test above

@@ -176,6 +176,9 @@ fn lattice<R: Real>(acc: &mut u32, p: [R; 4]) {
             if w3.fill_grid_projected(&grid3, normal, &mut out).is_ok() {
                 add(out.get(black_box(17)).copied().unwrap_or(R::ZERO));
             }
+            if m.fill_grid_projected(&grid3, normal, &mut out).is_ok() {
+                add(out.get(black_box(29)).copied().unwrap_or(R::ZERO));
+            }
         }
     }
     // Periodic noise (a gradient lattice and value noise), the cell hash and generator.
