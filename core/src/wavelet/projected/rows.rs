@@ -430,7 +430,7 @@ mod tests {
     fn multiband_grids_are_the_point_samples() {
         let bands = Bands::new(-1, &[0.5, 0.0, 1.0, 0.25]).unwrap();
         for distribution in [Distribution::Gaussian, Distribution::Uniform] {
-            let m = Multiband::new(2, &TILE3, bands.clone(), distribution);
+            let m = Multiband::new(2, &TILE3, bands, distribution);
             let compared = check::<f32, _>(&m) + check::<f64, _>(&m) + check::<I16F16, _>(&m);
             assert!(compared > 10_000, "{compared}");
         }
