@@ -303,27 +303,12 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         if nrm.iter().filter(|&&x| x == R::ZERO).count() != 2 || nrm[normal].abs() > R::ONE {
             return None;
         }
-        let (half, three) = (R::from_ratio(1, 1), R::from_i32(3));
         let mut first = [0i32; 3];
         let mut t = [[R::ZERO; WIDTH]; 3];
         let mut support = [0..0, 0..0, 0..0];
         for a in 0..3 {
-            let (cell, frac) = p[a].split();
-            let [lo, hi] = if a == normal { ALONG } else { ACROSS };
-            let (mut from, mut len) = (lo, 0);
-            for k in lo..hi {
-                let d = frac - R::from_i32(k);
-                let ta = (R::from_ratio(3, 1) - d) + nrm[a].mul_rn(nrm[a].mul_rn(d)).mul_rn(half);
-                if ta > R::ZERO && ta < three {
-                    if len == 0 {
-                        from = k;
-                    }
-                    // At most 6 offsets (`ALONG`), so below WIDTH.
-                    t[a][len % WIDTH] = ta;
-                    len += 1;
-                }
-            }
-            first[a] = cell.checked_add(from)?;
+            let len;
+            (first[a], len, t[a]) = axis_support(p[a], a, nrm, normal)?;
             support[a] = 0..len;
         }
         let sums = self.projected_axis::<R, GRADIENT, PERMUTED>(first, &t, &support, normal)?;
@@ -713,6 +698,39 @@ fn row_sums<'w, 'r, R: Real + 'w, const GRADIENT: bool, const W: usize, const FL
         }
         *sum = sum.saturating_add(block_sum);
     }
+}
+
+/// Axis `a` of a sample at coordinate `x` along the axis-aligned unit normal `nrm` (whose
+/// axis is `normal`): the offsets from the cell where the basis argument
+/// `t = (3/2 − d) + n_a (n_a d)/2`, `d = frac − k`, lies in `(0, 3)` (consecutive: `t` falls
+/// by at least ½ per offset, [`ACROSS`], [`ALONG`]), as the support's first global
+/// coefficient (`None` past `i32`'s range), its length and its `t` from the first.
+#[inline(always)]
+fn axis_support<R: Real>(
+    x: R,
+    a: usize,
+    nrm: [R; 3],
+    normal: usize,
+) -> Option<(i32, usize, [R; WIDTH])> {
+    let (half, three) = (R::from_ratio(1, 1), R::from_i32(3));
+    let (cell, frac) = x.split();
+    let [lo, hi] = if a == normal { ALONG } else { ACROSS };
+    let n = nrm[a % 3];
+    let (mut from, mut len) = (lo, 0);
+    let mut t = [R::ZERO; WIDTH];
+    for k in lo..hi {
+        let d = frac - R::from_i32(k);
+        let ta = (R::from_ratio(3, 1) - d) + n.mul_rn(n.mul_rn(d)).mul_rn(half);
+        if ta > R::ZERO && ta < three {
+            if len == 0 {
+                from = k;
+            }
+            // At most 6 offsets (`ALONG`), so below WIDTH.
+            t[len % WIDTH] = ta;
+            len += 1;
+        }
+    }
+    Some((cell.checked_add(from)?, len, t))
 }
 
 /// The offsets `k` from the cell (`lo..hi`) whose basis argument can lie in `(0, 3)` across an

@@ -18,10 +18,9 @@
 //! Lanes whose point sample would not take the axis path (a support near the end of `i32`'s
 //! range, tiles narrower than the support) are sampled as points.
 
-use super::{ACROSS, ALONG, SPAN, crossing, span, zone_offset};
+use super::{SPAN, crossing, span, zone_offset};
 use crate::batch::{Grid, LANES, for_each_row, store_lanes};
 use crate::wavelet::band::{Placement, TileData, Wavelet, first_block};
-use crate::wavelet::window::WIDTH;
 use crate::{Error, Real};
 
 /// One axis of a sample along an axis-aligned normal, resolved as
@@ -64,24 +63,8 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         normal: usize,
     ) -> Option<Axis<R>> {
         let (n, h) = (T::SIZE, self.half_width::<3>());
-        let (half, three) = (R::from_ratio(1, 1), R::from_i32(3));
-        let (cell, frac) = x.split();
-        let [lo, hi] = if a == normal { ALONG } else { ACROSS };
-        let (mut from, mut len) = (lo, 0);
-        let mut t = [R::ZERO; WIDTH];
-        for k in lo..hi {
-            let d = frac - R::from_i32(k);
-            let ta = (R::from_ratio(3, 1) - d) + nrm[a].mul_rn(nrm[a].mul_rn(d)).mul_rn(half);
-            if ta > R::ZERO && ta < three {
-                if len == 0 {
-                    from = k;
-                }
-                t[len % WIDTH] = ta;
-                len += 1;
-            }
-        }
+        let (g, len, t) = super::axis_support(x, a, nrm, normal)?;
         let span = span(a, normal);
-        let g = cell.checked_add(from)?;
         // An empty support (the point gives 0) or one the axis path does not take.
         if len == 0 || len > span || g.checked_add(span as i32).is_none() {
             return None;
