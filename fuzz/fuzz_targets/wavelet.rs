@@ -107,10 +107,15 @@ fuzz_target!(|input: Input| {
     }
     let gq = Grid::new(q, [dq[0], dq[1], dq[2]], [10, 3, 2]);
     let mut outq = [I16F16::ZERO; 60];
-    band3.fill_grid_projected(&gq, [nq[0], I16F16::ZERO, I16F16::ZERO], &mut outq).unwrap();
+    band3
+        .fill_grid_projected(&gq, [nq[0], I16F16::ZERO, I16F16::ZERO], &mut outq)
+        .unwrap();
     for (i, &v) in outq.iter().enumerate() {
         let at = gq.point([i % 10, i / 10 % 3, i / 30]);
-        assert_eq!(v, band3.sample_projected(at, [nq[0], I16F16::ZERO, I16F16::ZERO]));
+        assert_eq!(
+            v,
+            band3.sample_projected(at, [nq[0], I16F16::ZERO, I16F16::ZERO])
+        );
     }
 
     let distribution = if input.uniform {
