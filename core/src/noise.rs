@@ -189,9 +189,9 @@ pub trait ProjectedNoise<R: Real>: Noise<R, 3> {
     /// terrain or a wall.
     ///
     /// The values are [`sample_projected`](Self::sample_projected)`(grid.point(i), normal)`,
-    /// bit for bit. The provided method samples point by point; a band of wavelet noise
-    /// shares the work of a grid row along an axis-aligned normal (several times faster:
-    /// `bench/README.md`).
+    /// bit for bit. The provided method samples point by point; wavelet noise (a band, and
+    /// each band of multiband noise) shares the work of a grid row along an axis-aligned
+    /// normal (several times faster: `bench/README.md`).
     ///
     /// # Errors
     ///

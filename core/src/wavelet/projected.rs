@@ -211,8 +211,8 @@ impl<R: Real, T: TileData<3>> ProjectedNoise<R> for Wavelet<'_, T> {
     /// The band over `grid` along one normal, bit for bit as
     /// [`sample_projected`](ProjectedNoise::sample_projected) at each point: the normal is
     /// normalised once, and along an axis-aligned normal each grid row resolves its y and z
-    /// weights and blocks once and sums runs of samples within one coefficient together
-    /// (`projected/rows.rs`).
+    /// weights and blocks once and sums groups of up to 16 samples together, each coefficient
+    /// read once for the group (`projected/rows.rs`).
     fn fill_grid_projected(
         &self,
         grid: &crate::batch::Grid<R, 3>,
@@ -299,10 +299,7 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         p: [R; 3],
         nrm: [R; 3],
     ) -> Option<Sums<R, GRADIENT>> {
-        let normal = nrm.iter().position(|&x| x != R::ZERO)?;
-        if nrm.iter().filter(|&&x| x == R::ZERO).count() != 2 || nrm[normal].abs() > R::ONE {
-            return None;
-        }
+        let normal = axis_of(nrm)?;
         let mut first = [0i32; 3];
         let mut t = [[R::ZERO; WIDTH]; 3];
         let mut support = [0..0, 0..0, 0..0];
@@ -698,6 +695,15 @@ fn row_sums<'w, 'r, R: Real + 'w, const GRADIENT: bool, const W: usize, const FL
         }
         *sum = sum.saturating_add(block_sum);
     }
+}
+
+/// The axis of a unit normal that the axis path takes (two components zero, the third at
+/// most 1 in magnitude), or `None`.
+#[inline]
+fn axis_of<R: Real>(nrm: [R; 3]) -> Option<usize> {
+    let normal = nrm.iter().position(|&x| x != R::ZERO)?;
+    let zeros = nrm.iter().filter(|&&x| x == R::ZERO).count();
+    (zeros == 2 && nrm[normal % 3].abs() <= R::ONE).then_some(normal)
 }
 
 /// Axis `a` of a sample at coordinate `x` along the axis-aligned unit normal `nrm` (whose

@@ -5,20 +5,22 @@
 //! Along an axis-aligned normal a sample's basis is a product of per-axis weights and its sum
 //! runs block by block ([`Wavelet::projected_axis`]). Along a grid row only x changes: the
 //! row resolves y and z once (their supports, blocks, local indices and weights), and each
-//! sample only x. Samples go [`LANES`] at a time; the lanes whose support starts at the same
-//! x coefficient (a run: consecutive samples within one coefficient) read the same
-//! coefficients in the same blocks, so a run finds its blocks' placements and index parts
-//! once and reads each coefficient once for all its lanes, and the sums run entry by entry
-//! across the lanes, which the compiler vectorises. Each lane's operations and their order
-//! are [`block_sums`](super::block_sums)'s: z outermost, x innermost, blocks in slot order.
+//! sample only x. Samples go [`LANES`] at a time; the lanes whose supports start in one block
+//! along x within a few coefficients of each other (a group: along a row, usually the whole
+//! chunk) find their blocks' placements and index parts once and read each coefficient once
+//! for all of them, summed over the group's extent with each lane's weights at its own
+//! offsets and zeros elsewhere, and the sums run entry by entry across the lanes, which the
+//! compiler vectorises. Each lane's operations and their order are
+//! [`block_sums`](super::block_sums)'s: z outermost, x innermost, blocks in slot order.
 //!
-//! A run visits the next block along x if any of its lanes reaches it; a lane that does not
-//! weighs it 0 (its weights there are zeros), so the block adds `+0` to a sum that is never
-//! `−0` (sums start at `+0`; fixed point: 0), which leaves the lane's sum as the point's.
+//! Zero terms add `+0` to a line before its first term and `±0` after, and a group visits
+//! the next block along x if any of its lanes reaches it, which the others weigh 0: a block
+//! of zero terms adds `+0` to a sum that is never `−0` (sums start at `+0`; fixed point: 0).
+//! Each lane's sum is the point's, bit for bit.
 //! Lanes whose point sample would not take the axis path (a support near the end of `i32`'s
 //! range, tiles narrower than the support) are sampled as points.
 
-use super::{SPAN, crossing, span, zone_offset};
+use super::{SPAN, axis_of, crossing, span, zone_offset};
 use crate::batch::{Grid, LANES, for_each_row, store_lanes};
 use crate::wavelet::band::{Placement, TileData, Wavelet, first_block};
 use crate::{Error, Real};
@@ -283,15 +285,6 @@ impl<T: TileData<3>> Wavelet<'_, T> {
         }
         sums
     }
-}
-
-/// The axis of a unit normal that the point's axis path takes (two components zero, the
-/// third at most 1 in magnitude), as [`Wavelet::projected_along`] tests it.
-#[inline]
-fn axis_of<R: Real>(nrm: [R; 3]) -> Option<usize> {
-    let normal = nrm.iter().position(|&x| x != R::ZERO)?;
-    let zeros = nrm.iter().filter(|&&x| x == R::ZERO).count();
-    (zeros == 2 && nrm[normal % 3].abs() <= R::ONE).then_some(normal)
 }
 
 /// The most offsets along x a group of lanes sums: its lanes' supports (3 offsets across the
